@@ -1,0 +1,5 @@
+import sys
+
+from tampcli.cli import main
+
+sys.exit(main())

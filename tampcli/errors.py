@@ -1,0 +1,111 @@
+"""Errors that reach the user: bad input (exit 2) with a precise location.
+
+An InputError knows the file, line and column it is about and, when it can,
+the offending source line, so the CLI can print `path:line:col: message`, the
+line and a caret. Everything that is the user's fault is an InputError; any
+other exception is a bug (exit 70).
+"""
+
+from __future__ import annotations
+
+import enum
+
+
+class ExitCode(enum.IntEnum):
+    OK = 0
+    NO_SOLUTION = 1  # proved unsolvable, or a limit was reached; or a plan is invalid
+    BAD_INPUT = 2
+    INTERNAL = 70
+
+
+class InputError(Exception):
+    """Bad input: a file, or a command-line usage, the user must fix."""
+
+    kind = "input"
+
+    def __init__(
+        self,
+        message: str,
+        path: str | None = None,
+        line: int | None = None,
+        column: int | None = None,
+        source_line: str | None = None,
+        expected: tuple[str, ...] = (),
+        key: str | None = None,
+    ):
+        super().__init__(message)
+        self.message = message
+        self.path = path
+        self.line = line
+        self.column = column
+        self.source_line = source_line
+        self.expected = expected
+        self.key = key
+
+    def location(self) -> str:
+        parts = [self.path or "<input>"]
+        if self.line is not None:
+            parts.append(str(self.line))
+            if self.column is not None:
+                parts.append(str(self.column))
+        return ":".join(parts)
+
+    def render(self) -> str:
+        """The full user-facing text: location, message, source line, caret."""
+        head = f"{self.location()}: "
+        if self.key:
+            head += f"{self.key}: "
+        text = head + self.message
+        if self.expected:
+            text += "\n  expected: " + ", ".join(self.expected)
+        if self.source_line is not None:
+            src = self.source_line.rstrip("\n").expandtabs(1)
+            text += "\n  " + src
+            if self.column is not None:
+                text += "\n  " + " " * max(self.column - 1, 0) + "^"
+        return text
+
+    def to_json(self) -> dict:
+        return {
+            "kind": self.kind,
+            "message": self.message,
+            "path": self.path,
+            "line": self.line,
+            "column": self.column,
+            "key": self.key,
+            "expected": list(self.expected),
+        }
+
+
+class PDDLSyntaxError(InputError):
+    kind = "syntax"
+
+
+class PDDLSemanticError(InputError):
+    kind = "semantic"
+
+
+class UnsupportedFeatureError(InputError):
+    kind = "unsupported"
+
+
+class SceneError(InputError):
+    kind = "scene"
+
+
+class SolutionFileError(InputError):
+    kind = "solution"
+
+
+class UsageError(InputError):
+    kind = "usage"
+
+
+def source_line_at(text: str, line: int | None) -> str | None:
+    """The 1-based `line` of `text`, or None when out of range."""
+    if line is None or line < 1:
+        return None
+    lines = text.splitlines()
+    if line > len(lines):
+        return None
+    return lines[line - 1]

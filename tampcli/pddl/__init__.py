@@ -1,0 +1,1 @@
+"""The PDDL front end: grammar, AST, parser, semantic checks, printer."""
