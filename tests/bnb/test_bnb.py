@@ -1,0 +1,151 @@
+"""Branch and bound on toy skeletons and toy evaluators (geometry as plain callables)."""
+
+from dataclasses import dataclass
+
+import pytest
+
+from tampcli.bnb import BnBOptions, branch_and_bound
+
+
+@dataclass(frozen=True)
+class Op:
+    name: str
+
+
+@dataclass(frozen=True)
+class Plan:
+    operators: tuple
+    cost: float
+
+
+@dataclass(frozen=True)
+class R:
+    status: str
+    cost: float | None = None
+    worst_constraint: str | None = None
+    proved: bool = False
+    iterations: int = 1
+
+
+class Source:
+    """A ranked list of plans that honours forbid_prefix, like TopK."""
+
+    def __init__(self, plans):
+        self.plans = [Plan(tuple(Op(n) for n in names), cost) for names, cost in plans]
+        self.forbidden = []
+        self.drawn = []
+
+    def forbid_prefix(self, names):
+        self.forbidden.append(tuple(names))
+
+    def __iter__(self):
+        for plan in self.plans:
+            names = tuple(op.name for op in plan.operators)
+            if any(names[:len(f)] == f for f in self.forbidden):
+                continue
+            self.drawn.append(names)
+            yield plan
+
+
+def table_evaluator(table, calls=None):
+    """Evaluate by looking up (names, stage) -> R; default solved with cost 1."""
+
+    def evaluate(ops, stage, warm):
+        names = tuple(op.name for op in ops)
+        if calls is not None:
+            calls.append((names, stage))
+        for key, result in table.items():
+            if names[:len(key[0])] == key[0] and key[1] == stage:
+                return result
+        return R("solved", 1.0)
+
+    return evaluate
+
+
+def test_first_feasible_skeleton_wins_when_later_cannot_beat_it():
+    src = Source([(("a",), 1), (("b",), 100)])
+    res = branch_and_bound(src, table_evaluator({}), BnBOptions(symbolic_weight=0.1))
+    assert res.status == "solved"
+    assert [op.name for op in res.best_plan] == ["a"]
+    # objective 1 + 0.1 = 1.1 < 0.1 * 100: the second skeleton is never optimized.
+    assert res.optimal
+    assert res.stats["skeletons_optimized"] == 1
+    assert res.lower_bound == pytest.approx(0.1)
+
+
+def test_infeasible_cheapest_skeleton_is_skipped_and_recorded():
+    src = Source([(("a",), 1), (("b",), 2)])
+    ev = table_evaluator({(("a",), "final"): R("infeasible", worst_constraint="region full")})
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert [op.name for op in res.best_plan] == ["b"]
+    assert res.skeletons[0].outcome == "infeasible"
+    assert "region full" in res.skeletons[0].reason
+
+
+def test_cheaper_trajectory_beats_cheaper_symbolic_cost():
+    src = Source([(("push",), 1), (("pick", "place"), 2)])
+    ev = table_evaluator({(("push",), "path"): R("solved", 5.0),
+                          (("push",), "keyframes"): R("solved", 0.5),
+                          (("pick",), "path"): R("solved", 2.0)})
+    res = branch_and_bound(src, ev, BnBOptions(symbolic_weight=0.1))
+    assert [op.name for op in res.best_plan] == ["pick", "place"]
+    assert res.best_objective == pytest.approx(2.2)
+
+
+def test_keyframe_bound_prunes_without_path_solve():
+    src = Source([(("a",), 1), (("b",), 2)])
+    calls = []
+    ev = table_evaluator({(("a",), "path"): R("solved", 1.0),
+                          (("b",), "keyframes"): R("solved", 3.0)}, calls)
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert res.skeletons[1].outcome == "pruned"
+    assert res.skeletons[1].bound_kind == "heuristic"
+    assert (("b",), "path") not in calls
+
+
+def test_infeasible_prefix_prunes_every_skeleton_sharing_it():
+    plans = [(("x", "y", "z"), 3), (("x", "y", "w"), 4), (("x", "v"), 5), (("q",), 6)]
+    src = Source(plans)
+    ev = table_evaluator({(("x", "y"), "keyframes"): R("infeasible", worst_constraint="ik")})
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert ("x", "y") in src.forbidden
+    assert ("x", "y", "w") not in src.drawn  # never produced by the generator
+    assert [op.name for op in res.best_plan] == ["x", "v"]
+
+
+def test_no_solution_explains_why_and_is_a_limit_unless_proved():
+    src = Source([(("a",), 1), (("b",), 2)])
+    ev = table_evaluator({(("a",), "final"): R("infeasible", worst_constraint="out of reach"),
+                          (("b",), "final"): R("infeasible", worst_constraint="too small")})
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert res.status == "limit"
+    assert "out of reach" in res.reason and "too small" in res.reason
+    ev_proved = table_evaluator({
+        (("a",), "final"): R("infeasible", worst_constraint="out of reach", proved=True),
+        (("b",), "final"): R("infeasible", worst_constraint="too small", proved=True)})
+    assert branch_and_bound(Source([(("a",), 1), (("b",), 2)]), ev_proved,
+                            BnBOptions()).status == "unsolvable"
+
+
+def test_skeleton_limit():
+    src = Source([((f"a{i}",), i) for i in range(10)])
+    ev = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(10)})
+    res = branch_and_bound(src, ev, BnBOptions(max_skeletons=3))
+    assert res.status == "limit"
+    assert len(res.skeletons) == 3
+    assert "skeleton limit (3)" in res.reason
+
+
+def test_time_limit_with_fake_clock():
+    ticks = iter(range(1000))
+    src = Source([((f"a{i}",), i) for i in range(10)])
+    ev = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(10)})
+    res = branch_and_bound(src, ev, BnBOptions(time_limit=5), clock=lambda: next(ticks))
+    assert res.status == "limit" and res.stats["stop"] == "time"
+
+
+def test_options_are_validated():
+    with pytest.raises(ValueError):
+        BnBOptions(max_skeletons=0)
+    with pytest.raises(ValueError):
+        BnBOptions(symbolic_weight=-1)
