@@ -1,0 +1,153 @@
+"""`tampcli solve DOMAIN PROBLEM`: ranked skeletons x trajectory optimization."""
+
+from __future__ import annotations
+
+from rich.live import Live
+from rich.table import Table
+
+from tampcli import solution as solution_file
+from tampcli.bnb import Event
+from tampcli.errors import ExitCode, UsageError
+from tampcli.pipeline import SolveOptions, solve
+
+
+def add_parser(p) -> None:
+    p.add_argument("domain", help="PDDL domain file")
+    p.add_argument("problem", help="PDDL problem file")
+    p.add_argument("--scene", help="scene.toml (default: PROBLEM's name + .scene.toml beside it)")
+    p.add_argument("--modes", help="modes.toml (default: beside the domain file)")
+    p.add_argument("-k", "--skeletons", type=int, default=20, metavar="K",
+                   help="skeletons to draw at most (default 20)")
+    p.add_argument("--time-limit", type=float, default=120.0, metavar="S",
+                   help="seconds for the whole solve (default 120)")
+    p.add_argument("--symbolic-weight", type=float, default=0.1, metavar="W",
+                   help="objective = trajectory cost + W * symbolic cost (default 0.1)")
+    p.add_argument("--waypoints", type=int, default=10, metavar="T",
+                   help="waypoints per motion phase (default 10)")
+    p.add_argument("--anytime", action="store_true",
+                   help="keep improving until a limit; report each improvement")
+    p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    p.add_argument("--out", metavar="FILE", help="write solution.json here (whatever the outcome)")
+    p.add_argument("--video", metavar="FILE", help="render the solution to FILE (.mp4 or .gif)")
+
+
+def run(args, ui) -> int:
+    try:
+        options = SolveOptions(max_skeletons=args.skeletons, time_limit=args.time_limit,
+                               symbolic_weight=args.symbolic_weight, waypoints=args.waypoints,
+                               anytime=args.anytime, seed=args.seed)
+    except ValueError as err:
+        raise UsageError(str(err), "tampcli solve") from None
+    if args.skeletons < 1 or args.time_limit <= 0 or args.symbolic_weight < 0:
+        raise UsageError("-k must be >= 1, --time-limit > 0, --symbolic-weight >= 0",
+                         "tampcli solve")
+    view = _LiveView(ui)
+    with view:
+        sol = solve(args.domain, args.problem, args.scene, args.modes, options, view.on_event)
+    if args.out:
+        solution_file.write(sol, args.out)
+    if args.video and sol.solved and sol.trajectory:
+        _render(args.out, sol, args.video, ui)
+    if ui.json:
+        ui.emit_json(solution_file.to_dict(sol))
+    else:
+        _summary(sol, ui, args)
+    return ExitCode.OK if sol.solved else ExitCode.NO_SOLUTION
+
+
+def _render(out_path, sol, video, ui) -> None:
+    from tampcli.render.video import render_solution
+
+    info = render_solution(out_path or sol, video, None, ui=ui)
+    ui.info(f"video: {info.get('path', video)}")
+
+
+def _summary(sol, ui, args) -> None:
+    stats = sol.stats
+    seconds = stats.get("seconds", {})
+    if sol.solved:
+        if sol.scene is None:
+            ui.info("no scene: solved symbolically")
+        ui.plain("\n".join(sol.plan))
+        ui.plain(f"; symbolic cost = {sol.symbolic_cost:g}")
+        if sol.scene is not None:
+            ui.info(f"solved: trajectory cost {sol.cost:.4f}, objective {sol.objective:.4f}, "
+                    f"{len(sol.trajectory)} waypoints")
+    else:
+        ui.error(f"{sol.status}: {sol.reason}")
+    if sol.skeletons:
+        table = Table(title="skeletons")
+        for col in ("#", "plan", "sym", "bound", "stage", "outcome", "nlp cost", "s"):
+            table.add_column(col)
+        for s in sol.skeletons:
+            table.add_row(str(s.rank), _short(s.plan), f"{s.symbolic_cost:g}",
+                          _fmt(s.bound) + (" (h)" if s.bound_kind == "heuristic" else ""),
+                          s.stage or "-", s.outcome, _fmt(s.nlp_cost), f"{s.seconds:.2f}")
+        if not ui.quiet:
+            ui.err.print(table)
+    ui.info("time: " + ", ".join(f"{k} {v:.2f}s" for k, v in seconds.items())
+            + f"; skeletons {stats.get('skeletons_generated', 0)} generated, "
+            f"{stats.get('skeletons_optimized', 0)} optimized, "
+            f"{stats.get('skeletons_pruned', 0)} pruned, "
+            f"{stats.get('skeletons_infeasible', 0)} infeasible; "
+            f"NLP solves {stats.get('nlp_solves', 0)}")
+    if args.out:
+        ui.info(f"solution: {args.out}")
+
+
+def _short(plan, width=70) -> str:
+    text = " ".join(plan)
+    return text if len(text) <= width else text[: width - 1] + "…"
+
+
+def _fmt(value) -> str:
+    return "-" if value is None else f"{value:.4g}"
+
+
+class _LiveView:
+    """A live table of skeletons on a terminal; plain progress lines otherwise."""
+
+    def __init__(self, ui):
+        self.ui = ui
+        self.rows: dict[int, list[str]] = {}
+        self.live = None
+
+    def __enter__(self):
+        if self.ui.interactive:
+            self.live = Live(self._table(), console=self.ui.err, refresh_per_second=8,
+                             transient=True)
+            self.live.__enter__()
+        return self
+
+    def __exit__(self, *exc):
+        if self.live is not None:
+            self.live.__exit__(*exc)
+
+    def on_event(self, event: Event) -> None:
+        row = self.rows.setdefault(event.rank, [str(event.rank), _short(event.plan, 50),
+                                                _fmt(event.symbolic_cost), "-", "-", "…", "-"])
+        if event.kind == "stage":
+            row[3] = event.stage
+        elif event.kind == "outcome":
+            row[3] = event.stage or row[3]
+            row[4] = event.outcome
+            row[5] = _fmt(event.cost)
+            row[6] = f"{event.seconds:.1f}"
+        elif event.kind == "incumbent" and self.live is None:
+            self.ui.info(f"[{event.seconds:6.1f}s] new incumbent from skeleton #{event.rank}: "
+                         f"objective {event.bound:.4f}")
+        if self.live is not None:
+            self.live.update(self._table())
+        elif event.kind == "outcome":
+            self.ui.info(f"[{event.seconds:6.1f}s] skeleton #{event.rank} "
+                         f"({len(event.plan)} actions, cost {event.symbolic_cost:g}): "
+                         f"{event.outcome} at {event.stage}"
+                         + (f" - {event.message}" if event.message else ""))
+
+    def _table(self) -> Table:
+        table = Table(title="branch and bound")
+        for col in ("#", "plan", "sym", "stage", "outcome", "nlp cost", "t"):
+            table.add_column(col)
+        for row in list(self.rows.values())[-15:]:
+            table.add_row(*row)
+        return table
