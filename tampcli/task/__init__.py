@@ -1,0 +1,1 @@
+"""Grounding: lifted PDDL -> Task with integer facts and frozenset states."""
