@@ -1,0 +1,1 @@
+"""Search over a grounded Task: heuristics, searches, top-k, plan validation."""

@@ -1,0 +1,108 @@
+"""LM-cut (Helmert & Domshlak 2009): admissible, from disjunctive action landmarks.
+
+Each round computes h_max under the remaining action costs, with each
+action's precondition choice (its costliest precondition), then cuts the
+justification graph between the facts reachable from the state without
+passing the goal zone (facts that reach the goal through zero-cost actions)
+and the goal zone. The cut's cheapest cost is added to h and subtracted
+from every action of the cut, until the goal's h_max is 0.
+"""
+
+from __future__ import annotations
+
+import heapq
+
+from tampcli.errors import UnsupportedFeatureError
+from tampcli.search.heuristics.relaxed import INF, RelaxedTask
+from tampcli.task.task import Task
+
+
+class LMCut:
+    admissible = True
+
+    def __init__(self, task: Task):
+        for op in task.operators:
+            if op.cond_effects:
+                raise UnsupportedFeatureError(
+                    f"heuristic lmcut does not support conditional effects (operator {op.name}); "
+                    "use --heuristic hmax for optimal planning, or hff",
+                    key="--heuristic")
+        self.relaxed = r = RelaxedTask(task, init_fact=True)
+        self.achievers: list[list[int]] = [[] for _ in range(r.n_facts)]
+        for a, adds in enumerate(r.add):
+            for q in adds:
+                self.achievers[q].append(a)
+
+    def _hmax(self, state, costs):
+        r = self.relaxed
+        pre_of, adds = r.pre_of, r.add
+        unsat = r.pre_count[:]
+        dist = [INF] * r.n_facts
+        choice: list = [None] * r.n_actions
+        heap = [(0.0, f) for f in state]
+        heap.append((0.0, r.init_fact))
+        for _, f in heap:
+            dist[f] = 0.0
+        heapq.heapify(heap)
+        push, pop = heapq.heappush, heapq.heappop
+        while heap:
+            c, f = pop(heap)
+            if c > dist[f]:
+                continue
+            for a in pre_of[f]:
+                left = unsat[a] - 1
+                unsat[a] = left
+                if left == 0:
+                    # facts pop in non-decreasing order: f is the costliest precondition
+                    choice[a] = f
+                    nc = c + costs[a]
+                    for q in adds[a]:
+                        if nc < dist[q]:
+                            dist[q] = nc
+                            push(heap, (nc, q))
+        return dist, choice
+
+    def __call__(self, state) -> float:
+        r = self.relaxed
+        goal, n_facts = r.goal, r.n_facts
+        pre_of, adds, achievers = r.pre_of, r.add, self.achievers
+        costs = r.cost[:]
+        h = 0.0
+        while True:
+            dist, choice = self._hmax(state, costs)
+            if dist[goal] == INF:
+                return INF
+            if dist[goal] == 0.0:
+                return h
+            zone = bytearray(n_facts)
+            zone[goal] = 1
+            stack = [goal]
+            while stack:
+                f = stack.pop()
+                for a in achievers[f]:
+                    p = choice[a]
+                    if p is not None and costs[a] == 0.0 and not zone[p]:
+                        zone[p] = 1
+                        stack.append(p)
+            reached = bytearray(n_facts)
+            stack = [*state, r.init_fact]
+            for f in stack:
+                reached[f] = 1
+            cut = []
+            while stack:
+                f = stack.pop()
+                for a in pre_of[f]:
+                    if choice[a] != f:
+                        continue
+                    targets = adds[a]
+                    if any(zone[q] for q in targets):
+                        cut.append(a)
+                    else:
+                        for q in targets:
+                            if not reached[q]:
+                                reached[q] = 1
+                                stack.append(q)
+            m = min(costs[a] for a in cut)
+            h += m
+            for a in cut:
+                costs[a] -= m

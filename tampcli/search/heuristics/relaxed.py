@@ -1,0 +1,141 @@
+"""The delete relaxation of a Task as flat integer arrays, shared by the heuristics.
+
+Relaxed actions: one per operator (its precondition, its unconditional adds),
+one more per conditional effect (precondition + effect condition, the
+effect's adds), one zero-cost action per axiom rule, and zero-cost actions
+for the disjunctions of non-conjunctive conditions: an `or` node becomes an
+auxiliary fact with one achiever per disjunct, so conditions stay linear in
+size. Negative literals are dropped (they are assumed true), which keeps
+every value below a relaxation of the real task: h_max and LM-cut stay
+admissible. A single goal fact is reached by a zero-cost goal action.
+"""
+
+from __future__ import annotations
+
+import heapq
+
+from tampcli.task.task import Condition, Task
+
+INF = float("inf")
+
+
+class RelaxedTask:
+    def __init__(self, task: Task, init_fact: bool = False):
+        self.task = task
+        self.n_facts = len(task.facts)
+        self.pre: list[tuple[int, ...]] = []
+        self.add: list[tuple[int, ...]] = []
+        self.cost: list[float] = []
+        self.op: list[int] = []  # operator index, or -1 for axioms and auxiliary actions
+        self._aux: dict = {}
+        for i, op in enumerate(task.operators):
+            base = self._relax(op.pre)
+            if op.add:
+                self._action(base, op.add, op.cost, i)
+            for eff in op.cond_effects:
+                if eff.add:
+                    self._action(base | self._relax(eff.condition), eff.add, op.cost, i)
+        for ax in task.axioms:
+            self._action(set(ax.pos), (ax.head,), 0.0, -1)
+        self.goal = self._new_fact()
+        self._action(self._relax(task.goal), (self.goal,), 0.0, -1)
+        # LM-cut wants every action to have a precondition: give the
+        # precondition-free ones an artificial fact that every state holds.
+        self.init_fact = None
+        if init_fact:
+            self.init_fact = self._new_fact()
+            self.pre = [p if p else (self.init_fact,) for p in self.pre]
+        self.n_actions = len(self.pre)
+        self.pre_count = [len(p) for p in self.pre]
+        self.pre_of: list[list[int]] = [[] for _ in range(self.n_facts)]
+        for a, pre in enumerate(self.pre):
+            for f in pre:
+                self.pre_of[f].append(a)
+        self.no_pre = [a for a in range(self.n_actions) if not self.pre[a]]
+        self._aux = {}
+
+    def _new_fact(self) -> int:
+        self.n_facts += 1
+        return self.n_facts - 1
+
+    def _action(self, pre, add, cost: float, op: int) -> None:
+        self.pre.append(tuple(sorted(set(pre))))
+        self.add.append(tuple(sorted(set(add))))
+        self.cost.append(float(cost))
+        self.op.append(op)
+
+    def _relax(self, cond: Condition) -> set[int]:
+        facts = set(cond.pos)
+        for tree in cond.extra:
+            facts |= self._relax_tree(tree)
+        return facts
+
+    def _relax_tree(self, tree) -> set[int]:
+        if tree.__class__ is int:
+            return {tree} if tree >= 0 else set()
+        tag, parts = tree
+        if tag == "and":
+            out: set[int] = set()
+            for p in parts:
+                out |= self._relax_tree(p)
+            return out
+        fact = self._aux.get(tree)
+        if fact is None:
+            fact = self._new_fact()
+            self._aux[tree] = fact
+            for p in parts:
+                self._action(self._relax_tree(p), (fact,), 0.0, -1)
+        return {fact}
+
+    # ------------------------------------------------------------ explorations
+
+    def explore(self, state, additive: bool, costs=None):
+        """h_add (additive) or h_max costs of every fact from `state`.
+
+        Returns (dist, supporter): supporter[f] is the action that reached f
+        cheapest, -1 for the state's facts and None for unreached ones;
+        stops once the goal fact is settled.
+        """
+        costs = self.cost if costs is None else costs
+        pre_of, adds, goal = self.pre_of, self.add, self.goal
+        unsat = self.pre_count[:]
+        acc = [0.0] * self.n_actions
+        dist = [INF] * self.n_facts
+        supporter: list = [None] * self.n_facts
+        heap = []
+        for f in state:
+            dist[f] = 0.0
+            supporter[f] = -1
+            heap.append((0.0, f))
+        if self.init_fact is not None:
+            dist[self.init_fact] = 0.0
+            supporter[self.init_fact] = -1
+            heap.append((0.0, self.init_fact))
+        heapq.heapify(heap)
+        push, pop = heapq.heappush, heapq.heappop
+        for a in self.no_pre:
+            c = costs[a]
+            for q in adds[a]:
+                if c < dist[q]:
+                    dist[q] = c
+                    supporter[q] = a
+                    push(heap, (c, q))
+        while heap:
+            c, f = pop(heap)
+            if c > dist[f]:
+                continue
+            if f == goal:
+                break
+            for a in pre_of[f]:
+                left = unsat[a] - 1
+                unsat[a] = left
+                if additive:
+                    acc[a] += c
+                if left == 0:
+                    nc = (acc[a] if additive else c) + costs[a]
+                    for q in adds[a]:
+                        if nc < dist[q]:
+                            dist[q] = nc
+                            supporter[q] = a
+                            push(heap, (nc, q))
+        return dist, supporter
