@@ -27,7 +27,7 @@ test-all: install
 	$(BIN)/python -m pytest -q -m ''
 
 bench: install
-	$(BIN)/python bench/parse.py
+	@for script in bench/*.py; do echo "== $$script"; $(BIN)/python $$script || exit 1; done
 
 lint: install
 	$(BIN)/ruff check tampcli tests bench
