@@ -1,0 +1,97 @@
+import json
+
+import pytest
+
+from tests.conftest import IPC
+
+GRIPPER = IPC / "gripper" / "domain.pddl"
+GRIPPER1 = IPC / "gripper" / "prob01.pddl"
+PLAN = ["(pick ball1 rooma left)", "(pick ball2 rooma right)", "(move rooma roomb)",
+        "(drop ball2 roomb right)", "(drop ball1 roomb left)", "(move roomb rooma)",
+        "(pick ball3 rooma right)", "(pick ball4 rooma left)", "(move rooma roomb)",
+        "(drop ball4 roomb left)", "(drop ball3 roomb right)"]
+
+
+@pytest.fixture
+def plan_file(tmp_path):
+    def write(lines, name="plan.txt"):
+        path = tmp_path / name
+        path.write_text("\n".join(lines) + "\n")
+        return path
+
+    return write
+
+
+def test_valid_plan_exits_0_with_cost(cli, plan_file):
+    run = cli("validate", GRIPPER, GRIPPER1, plan_file(PLAN + ["; cost = 11 (unit cost)"]))
+    assert run.code == 0, run.err
+    assert run.out.startswith("valid, cost 11")
+
+
+def test_invalid_plan_exits_1_and_lists_the_step(cli, plan_file):
+    run = cli("validate", GRIPPER, GRIPPER1, plan_file(PLAN[1:]))
+    assert run.code == 1
+    assert "step 4 (line 4) (drop ball1 roomb left): precondition (carry ball1 left) is false" \
+        in run.out
+
+
+def test_unknown_object_is_an_invalid_plan_not_bad_input(cli, plan_file):
+    run = cli("validate", GRIPPER, GRIPPER1, plan_file(["(pick ball9 rooma left)"]))
+    assert run.code == 1
+    assert "step 1 (line 1)" in run.out and "unknown object ball9" in run.out
+
+
+def test_goal_not_reached(cli, plan_file):
+    run = cli("validate", GRIPPER, GRIPPER1, plan_file(PLAN[:-1]))
+    assert run.code == 1
+    assert "at the end: goal not reached: (at ball3 roomb) is false" in run.out
+
+
+def test_bad_plan_syntax_exits_2_with_location(cli, plan_file):
+    path = plan_file(["(pick ball1 rooma left)", "(move rooma roomb"])
+    run = cli("validate", GRIPPER, GRIPPER1, path)
+    assert run.code == 2
+    assert f"{path}:3:1:" in run.err and "not closed" in run.err
+    assert "Traceback" not in run.err
+
+
+def test_json_output(cli, plan_file):
+    run = cli("validate", "--json", GRIPPER, GRIPPER1, plan_file(PLAN[1:]))
+    data = json.loads(run.out)
+    assert data["status"] == "invalid" and data["valid"] is False
+    assert data["violations"][0]["step"] == 4
+    assert data["violations"][0]["line"] == 4
+    run = cli("validate", "--json", GRIPPER, GRIPPER1, plan_file(PLAN))
+    data = json.loads(run.out)
+    assert (data["status"], data["cost"], data["steps"]) == ("valid", 11, 11)
+
+
+def test_declared_cost_mismatch_is_a_warning(cli, plan_file):
+    run = cli("validate", GRIPPER, GRIPPER1, plan_file(PLAN + ["; cost = 9 (unit cost)"]))
+    assert run.code == 0
+    assert "declares cost 9" in run.err
+
+
+def test_solution_json_plan_is_checked(cli, plan_file):
+    solution = {"version": 1, "domain": str(GRIPPER), "problem": str(GRIPPER1),
+                "scene": None, "status": "solved", "plan": PLAN[:-1]}
+    path = plan_file([json.dumps(solution)], "solution.json")
+    run = cli("validate", "--json", GRIPPER, GRIPPER1, path)
+    data = json.loads(run.out)
+    assert run.code == 1
+    assert data["violations"][0]["kind"] == "symbolic"
+    assert "goal not reached" in data["violations"][0]["reason"]
+
+
+@pytest.mark.parametrize("content,where", [
+    ('{"plan": ["(move rooma roomb)",]}', ":1:"),
+    ('{"version": 1}', "plan: missing key"),
+    ('{"plan": "(move rooma roomb)"}', "plan: expected a list"),
+    ('{"plan": ["(move rooma roomb)", 3]}', "plan[1]: expected a string"),
+    ('{"plan": ["(move rooma roomb) (move roomb rooma)"]}', "plan[0]: expected one step"),
+])
+def test_bad_solution_json_exits_2(cli, plan_file, content, where):
+    run = cli("validate", GRIPPER, GRIPPER1, plan_file([content], "solution.json"))
+    assert run.code == 2, run.out
+    assert where in run.err
+    assert "Traceback" not in run.err
