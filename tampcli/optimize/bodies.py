@@ -1,0 +1,104 @@
+"""What the optimizer needs to know of a scene body: extents, footprint, resting pose.
+
+Every movable object is upright whenever it rests (grasps are top grasps, pushes
+keep it on its support), so a resting pose is (x, y, z, yaw) and the height at
+which an object rests on a support follows from the stack below it alone.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from tampcli.geometry import transforms
+
+# Resting contact tolerance (SPEC: "its bottom rests on that face (within 5 mm)").
+REST_TOLERANCE = 0.005
+
+
+@dataclass(frozen=True)
+class BodyInfo:
+    name: str
+    shape: str
+    half: tuple[float, float, float]  # half extents in the body frame (x, y, z)
+    fixed: bool
+    pose: tuple[float, float, float, float]  # start (x, y, z, yaw)
+    upright: bool  # the start pose has its z axis vertical
+
+    @property
+    def disk(self) -> bool:
+        """Footprint is a disk (cylinder, sphere) rather than a rectangle."""
+        return self.shape in ("cylinder", "sphere")
+
+    @property
+    def radius(self) -> float:
+        """Radius of the circle around the footprint (conservative for overlap tests)."""
+        return self.half[0] if self.disk else math.hypot(self.half[0], self.half[1])
+
+    @property
+    def top(self) -> float:
+        return self.pose[2] + self.half[2]
+
+    @property
+    def bottom(self) -> float:
+        return self.pose[2] - self.half[2]
+
+
+def body_info(body, world=None) -> BodyInfo:
+    """Extents from the shape's size; meshes and URDFs from their PyBullet AABB."""
+    m = body.matrix
+    yaw = transforms.yaw_of(m)
+    upright = bool(m[2, 2] > 1.0 - 1e-6)
+    if body.shape == "box":
+        half = tuple(0.5 * s for s in body.size)
+    elif body.shape == "cylinder":
+        half = (body.size[0], body.size[0], 0.5 * body.size[1])
+    elif body.shape == "sphere":
+        half = (body.size[0],) * 3
+    else:
+        lo, hi = _aabb(world, body.name)
+        half = tuple(0.5 * (hi - lo))
+        centre = 0.5 * (hi + lo)
+        return BodyInfo(body.name, "box", half, body.fixed,
+                        (float(centre[0]), float(centre[1]), float(centre[2]), 0.0), True)
+    if not upright:
+        # A tilted body: treat it by its world AABB (only obstacles are tilted sensibly).
+        corners = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)])
+        world_pts = corners * np.array(half) @ m[:3, :3].T
+        half = tuple(np.max(np.abs(world_pts), axis=0))
+        yaw = 0.0
+    p = m[:3, 3]
+    return BodyInfo(body.name, body.shape, tuple(float(h) for h in half), body.fixed,
+                    (float(p[0]), float(p[1]), float(p[2]), float(yaw)), upright)
+
+
+def _aabb(world, name):
+    if world is None:
+        raise ValueError(f"body {name!r}: its extent needs the World (mesh or URDF)")
+    return world._aabb(world.pb_body(name))
+
+
+def pose_matrix(x: float, y: float, z: float, yaw: float) -> np.ndarray:
+    return transforms.pose(transforms.rot_z(yaw), (x, y, z))
+
+
+def start_support(info: BodyInfo, infos: dict[str, BodyInfo]) -> str | None:
+    """The body an object rests on at the start: top face at its bottom, under its centre."""
+    best = None
+    for other in infos.values():
+        if other.name == info.name or abs(other.top - info.bottom) > REST_TOLERANCE:
+            continue
+        if inside_rect(info.pose[:2], other, 0.0):
+            best = other.name
+    return best
+
+
+def inside_rect(xy, rect: BodyInfo, inset: float) -> bool:
+    c, s = math.cos(rect.pose[3]), math.sin(rect.pose[3])
+    d = np.asarray(xy, dtype=float) - np.asarray(rect.pose[:2])
+    u, v = c * d[0] + s * d[1], -s * d[0] + c * d[1]
+    if rect.disk:
+        return math.hypot(u, v) <= rect.half[0] - inset
+    return abs(u) <= rect.half[0] - inset and abs(v) <= rect.half[1] - inset

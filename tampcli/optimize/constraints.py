@@ -1,0 +1,183 @@
+"""Constraint values and exact Jacobians, written on PoseX (see expr.py).
+
+Inequalities are `>= 0`, equalities `= 0`; each row carries a Label so the
+worst violation can be said in words.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from tampcli.optimize.bodies import BodyInfo
+from tampcli.optimize.expr import Label, PoseX, RowSet
+
+STACK_INSET = 0.5  # a stacked object's centre stays within this fraction of the support's half size
+DOWN = 0.9  # cos of the largest tilt of an upright held object at grasp/push keyframes
+
+
+def _g(m: int) -> np.ndarray:
+    return np.zeros((m, 12))
+
+
+def inside_region(rows: RowSet, step: str, P: PoseX, info: BodyInfo, region) -> None:
+    """Whole footprint inside the (axis-aligned) region rectangle."""
+    lo, hi = np.asarray(region.lower), np.asarray(region.upper)
+    if info.disk:
+        r = info.half[0]
+        vals = np.array([P.pos[0] - lo[0] - r, hi[0] - r - P.pos[0],
+                         P.pos[1] - lo[1] - r, hi[1] - r - P.pos[1]])
+        g = _g(4)
+        g[0, 0], g[1, 0], g[2, 1], g[3, 1] = 1, -1, 1, -1
+    else:
+        hx, hy = info.half[0], info.half[1]
+        vals, g = [], _g(16)
+        row = 0
+        for a in (-1.0, 1.0):
+            for b in (-1.0, 1.0):
+                corner = P.pos[:2] + a * hx * P.ax[:2] + b * hy * P.ay[:2]
+                for axis in (0, 1):
+                    for sign, bound in ((1.0, lo[axis]), (-1.0, hi[axis])):
+                        vals.append(sign * (corner[axis] - bound))
+                        g[row, axis] = sign
+                        g[row, 3 + axis] = sign * a * hx
+                        g[row, 6 + axis] = sign * b * hy
+                        row += 1
+        vals = np.array(vals)
+    rows.add(vals, P.through(g), Label(step, f"footprint outside region {region.name}"))
+
+
+def on_top_of(rows: RowSet, step: str, P: PoseX, S: PoseX, sinfo: BodyInfo) -> None:
+    """The centre over the support's top face, inset (stacking)."""
+    d = P.pos[:2] - S.pos[:2]
+    label = Label(step, f"centre off the top of {sinfo.name}")
+    if sinfo.disk:
+        lim = STACK_INSET * sinfo.half[0]
+        g = _g(1)
+        g[0, 0:2] = -2 * d
+        gs = _g(1)
+        gs[0, 0:2] = 2 * d
+        jac = P.through(g)
+        for k, v in S.through(gs).items():
+            jac[k] = jac[k] + v if k in jac else v
+        rows.add(np.array([lim**2 - d @ d]), jac, label)
+        return
+    vals, gp, gs = [], _g(4), _g(4)
+    row = 0
+    for axis, col in ((0, 3), (1, 6)):
+        e = S.v[col:col + 2]
+        u = e @ d
+        lim = STACK_INSET * sinfo.half[axis]
+        for sign in (1.0, -1.0):
+            vals.append(lim - sign * u)
+            gp[row, 0:2] = -sign * e
+            gs[row, 0:2] = sign * e
+            gs[row, col:col + 2] = -sign * d
+            row += 1
+    jac = P.through(gp)
+    for k, v in S.through(gs).items():
+        jac[k] = jac[k] + v if k in jac else v
+    rows.add(np.array(vals), jac, label)
+
+
+def rest_height(rows: RowSet, step: str, P: PoseX, z: float, support: str) -> None:
+    g = _g(1)
+    g[0, 2] = 1.0
+    rows.add(np.array([P.pos[2] - z]), P.through(g), Label(step, f"not resting on {support}"))
+
+
+def upright(rows: RowSet, step: str, P: PoseX, what: str) -> None:
+    g = _g(2)
+    g[0, 9], g[1, 10] = 1.0, 1.0
+    rows.add(P.az[:2].copy(), P.through(g), Label(step, f"{what} tilted", "rad"))
+
+
+def stays_up(rows: RowSet, step: str, P: PoseX) -> None:
+    """az_z >= DOWN: excludes the upside-down branch of the upright equations."""
+    g = _g(1)
+    g[0, 11] = 1.0
+    rows.add(np.array([P.az[2] - DOWN]), P.through(g), Label(step, "upside down", ""))
+
+
+def apart_disks(rows: RowSet, step: str, P: PoseX, rp: float, Q: PoseX, rq: float,
+                other: str) -> None:
+    """Footprint circles apart: |P - Q|_xy >= rp + rq (conservative for boxes)."""
+    d = P.pos[:2] - Q.pos[:2]
+    n = float(np.linalg.norm(d))
+    u = d / n if n > 1e-12 else np.array([1.0, 0.0])
+    gp, gq = _g(1), _g(1)
+    gp[0, 0:2] = u
+    gq[0, 0:2] = -u
+    jac = P.through(gp)
+    for k, v in Q.through(gq).items():
+        jac[k] = jac[k] + v if k in jac else v
+    rows.add(np.array([n - rp - rq]), jac, Label(step, f"overlaps {other}"))
+
+
+def apart_rect(rows: RowSet, step: str, P: PoseX, rp: float, rect: BodyInfo) -> None:
+    """Footprint circle outside a fixed rectangle (signed distance from its centre)."""
+    c, s = np.cos(rect.pose[3]), np.sin(rect.pose[3])
+    d = P.pos[:2] - np.asarray(rect.pose[:2])
+    local = np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])
+    half = np.asarray(rect.half[:2])
+    if rect.disk:
+        n = float(np.linalg.norm(local))
+        sd, grad_local = n - half[0], (local / n if n > 1e-12 else np.array([1.0, 0.0]))
+    else:
+        q = np.abs(local) - half
+        sign = np.sign(local) + (local == 0)
+        if np.all(q <= 0):
+            i = int(np.argmax(q))
+            sd = float(q[i])
+            grad_local = np.zeros(2)
+            grad_local[i] = sign[i]
+        else:
+            outside = np.maximum(q, 0.0)
+            sd = float(np.linalg.norm(outside))
+            grad_local = outside / sd * sign
+    grad_world = np.array([c * grad_local[0] - s * grad_local[1],
+                           s * grad_local[0] + c * grad_local[1]])
+    g = _g(1)
+    g[0, 0:2] = grad_world
+    rows.add(np.array([sd - rp]), P.through(g), Label(step, f"overlaps {rect.name}"))
+
+
+def within_reach(rows: RowSet, step: str, P: PoseX, centre, reach: float) -> None:
+    d = P.pos - np.asarray(centre)
+    n = float(np.linalg.norm(d))
+    g = _g(1)
+    g[0, 0:3] = -d / max(n, 1e-12)
+    rows.add(np.array([reach - n]), P.through(g), Label(step, "out of the robot's reach"))
+
+
+def same_pose(rows: RowSet, ineq: RowSet, step: str, H: PoseX, target: PoseX, planar: bool,
+              yaw: bool) -> None:
+    """The gripped object's pose (from the tool) matches where the object is."""
+    k = 2 if planar else 3
+    g = _g(k)
+    for i in range(k):
+        g[i, i] = 1.0
+    jac = H.through(g)
+    for name, v in target.through(-g).items():
+        jac[name] = jac[name] + v if name in jac else v
+    rows.add(H.pos[:k] - target.pos[:k], jac, Label(step, "tool off the contact pose"))
+    if planar:
+        return
+    upright(rows, step, H, "tool")
+    stays_up(ineq, step, H)
+    if yaw:
+        # Tool yaw equal to the object's modulo pi: the gripper is symmetric.
+        val = H.ax[0] * target.ax[1] - H.ax[1] * target.ax[0]
+        gh, go = _g(1), _g(1)
+        gh[0, 3], gh[0, 4] = target.ax[1], -target.ax[0]
+        go[0, 3], go[0, 4] = -H.ax[1], H.ax[0]
+        jac = H.through(gh)
+        for name, v in target.through(go).items():
+            jac[name] = jac[name] + v if name in jac else v
+        rows.add(np.array([val]), jac, Label(step, "gripper not aligned with the faces", "rad"))
+
+
+def point_in_rect(rows: RowSet, step: str, P: PoseX, lo, hi, what: str) -> None:
+    vals = np.array([P.pos[0] - lo[0], hi[0] - P.pos[0], P.pos[1] - lo[1], hi[1] - P.pos[1]])
+    g = _g(4)
+    g[0, 0], g[1, 0], g[2, 1], g[3, 1] = 1, -1, 1, -1
+    rows.add(vals, P.through(g), Label(step, what))

@@ -1,0 +1,125 @@
+"""The tool frame with its Jacobians, and how a held or pushed object hangs from it.
+
+A grip is the object's frame in the tool frame: centre `c` and axes gx, gy, gz
+(columns of a rotation), possibly depending on one continuous parameter (the
+contact angle of the planar robot; the yaw offset of a push). A world vector
+R u attached to the tool moves with the joints as d(R u)/dq_j = w_j x (R u),
+so every held quantity has an exact Jacobian from the tool's (6, n) one.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class Frame:
+    """Tool pose at one configuration and its Jacobians (linear, angular)."""
+
+    p: np.ndarray  # (3,)
+    R: np.ndarray  # (3, 3)
+    Jp: np.ndarray  # (3, n)
+    Jw: np.ndarray  # (3, n)
+
+    @property
+    def matrix(self) -> np.ndarray:
+        t = np.eye(4)
+        t[:3, :3] = self.R
+        t[:3, 3] = self.p
+        return t
+
+
+class Kinematics:
+    """Tool frames of a World's robot, with a one-entry cache (SLSQP asks twice)."""
+
+    def __init__(self, world):
+        self.world = world
+        self.chain = world.chain
+        self.tool = world.chain.index[world.tool_link]
+        self._last_q = None
+        self._last = None
+
+    def frame(self, q) -> Frame:
+        q = np.asarray(q, dtype=float)
+        if self._last_q is not None and np.array_equal(q, self._last_q):
+            return self._last
+        frames = self.chain.fk_list(q)
+        t = frames[self.tool]
+        f = Frame(t[:3, 3].copy(), t[:3, :3].copy(),
+                  self.chain.jacobian_from_frames(frames, self.tool, t[:3, 3]),
+                  self.chain.angular_jacobian_from_frames(frames, self.tool))
+        self._last_q, self._last = q.copy(), f
+        return f
+
+
+def skew(v) -> np.ndarray:
+    return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])
+
+
+@dataclass(frozen=True)
+class Grip:
+    """Object frame in the tool frame as a function of an optional parameter t.
+
+    kind: "top" (arm, fixed yaw offset psi), "push" (arm, t = yaw offset),
+    "side" (planar suction, t = contact angle).
+    """
+
+    kind: str
+    c0: tuple[float, float, float]  # centre when it does not depend on t
+    psi: float = 0.0  # top grasp: object yaw minus tool yaw
+    rho: float = 0.0  # side: centre distance from the robot axis
+    yaw: float = 0.0  # side: object yaw (the planar robot does not turn)
+
+    @property
+    def has_param(self) -> bool:
+        return self.kind in ("push", "side")
+
+    def parts(self, t: float):
+        """c, G (3x3 columns gx gy gz), dc/dt, dG/dt."""
+        if self.kind == "side":
+            ct, st = math.cos(t), math.sin(t)
+            c = np.array([self.rho * ct, self.rho * st, self.c0[2]])
+            dc = np.array([-self.rho * st, self.rho * ct, 0.0])
+            cy, sy = math.cos(self.yaw), math.sin(self.yaw)
+            G = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
+            return c, G, dc, np.zeros((3, 3))
+        psi = t if self.kind == "push" else self.psi
+        cp, sp = math.cos(psi), math.sin(psi)
+        # Tool z points down; the object stays upright: its axes in the tool frame.
+        G = np.array([[cp, -sp, 0.0], [-sp, -cp, 0.0], [0.0, 0.0, -1.0]])
+        dG = np.array([[-sp, -cp, 0.0], [-cp, sp, 0.0], [0.0, 0.0, 0.0]])
+        if self.kind == "top":
+            dG = np.zeros((3, 3))
+        return np.array(self.c0), G, np.zeros(3), dG
+
+    def matrix(self, t: float) -> np.ndarray:
+        c, G, _, _ = self.parts(t)
+        out = np.eye(4)
+        out[:3, :3] = G
+        out[:3, 3] = c
+        return out
+
+
+@dataclass(frozen=True)
+class HeldPose:
+    """World pose of a gripped object (centre, axes) with d/dq (3, n) and d/dt (3,)."""
+
+    pos: np.ndarray
+    axes: np.ndarray  # (3, 3) columns ax ay az
+    dpos_dq: np.ndarray
+    daxes_dq: np.ndarray  # (3, 3, n): [:, i, :] is d axis_i / dq
+    dpos_dt: np.ndarray
+    daxes_dt: np.ndarray  # (3, 3)
+
+
+def held_pose(frame: Frame, grip: Grip, t: float) -> HeldPose:
+    c, G, dc, dG = grip.parts(t)
+    rc = frame.R @ c
+    pos = frame.p + rc
+    dpos_dq = frame.Jp - skew(rc) @ frame.Jw
+    axes = frame.R @ G
+    daxes = np.stack([-skew(axes[:, i]) @ frame.Jw for i in range(3)], axis=1)
+    return HeldPose(pos, axes, dpos_dq, daxes, frame.R @ dc, frame.R @ dG)

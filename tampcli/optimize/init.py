@@ -1,0 +1,171 @@
+"""Initial guesses: placements, IK keyframes, and via points for the paths.
+
+Measured here: from a trivial initial guess SLSQP ran 37-177 s and failed on a
+pick-place over a wall; from IK keyframes plus via points it converged in
+under a second. So every keyframe starts at an IK solution of the tool pose
+the action implies, and every path first lifts above what lies between.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tampcli.geometry import transforms
+from tampcli.optimize.bodies import pose_matrix
+from tampcli.optimize.grips import Grip
+from tampcli.optimize.problem import PANDA_OPENING, TrajectoryProblem
+from tampcli.optimize.world_state import grip_of
+
+IK_TOLERANCE = 1e-3
+QUARTERS = (0.0, 0.5 * math.pi, math.pi, -0.5 * math.pi)
+
+
+def final_guess(problem: TrajectoryProblem, warm: dict | None = None):
+    """(x, y, yaw) per placement block: region centre / support centre, current yaw."""
+    vals, origins = {}, {}
+    where = {n: np.array(i.pose[:2]) for n, i in problem.bodies.items()}
+    yaw = {n: i.pose[3] for n, i in problem.bodies.items()}
+    regions = {r.name: r for r in problem.scene.regions}
+    for step in problem.steps:
+        if step.kind not in ("place", "push"):
+            continue
+        block = f"p{step.index}"
+        origins[block] = where[step.obj].copy()
+        if warm and block in warm:
+            vals[block] = np.array(warm[block], dtype=float)
+        else:
+            target = (np.asarray(regions[step.target].center) if step.target in regions
+                      else where[step.target])
+            vals[block] = np.array([target[0], target[1], yaw[step.obj]])
+        where[step.obj] = vals[block][:2].copy()
+        yaw[step.obj] = float(vals[block][2])
+    return vals, origins
+
+
+def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng):
+    """IK keyframes following the actions; returns (block values, discrete choices)."""
+    world = problem.world
+    vals: dict[str, np.ndarray] = {}
+    choices: dict[str, float] = {}
+    poses = {n: pose_matrix(*i.pose) for n, i in problem.bodies.items() if not i.fixed}
+    q_prev = np.asarray(start, dtype=float)
+    planar = problem.planar
+
+    def solve_ik(target):
+        q, res = world.ik(target, seed=q_prev, rng_seed=int(rng.integers(1 << 30)))
+        return q, res
+
+    def best_of(targets):
+        """IK for each (target, tag); the reachable one closest to q_prev."""
+        best = None
+        for target, tag in targets:
+            q, res = solve_ik(target)
+            score = (res > IK_TOLERANCE, float(np.linalg.norm(q - q_prev)))
+            if best is None or score < best[0]:
+                best = (score, q, tag)
+        return best[1], best[2]
+
+    for step in problem.steps:
+        if step.kind == "none":
+            continue
+        if step.kind == "grasp":
+            (k,) = step.keyframes
+            obj_pose = poses[step.obj]
+            if planar:
+                p_prev = world.tool_pose(q_prev)[:2, 3]
+                phi = _angle(obj_pose[:2, 3] - p_prev)
+                choices[f"z{step.index}"] = float(obj_pose[2, 3])
+                choices[f"yaw{step.index}"] = transforms.yaw_of(obj_pose)
+                grip = grip_of(problem, step, choices)
+                vals[f"g{step.index}"] = np.array([phi])
+                q = _planar_q(obj_pose[:3, 3], grip, phi)
+            else:
+                info = problem.bodies[step.obj]
+                targets = []
+                for psi in QUARTERS:
+                    # Fingers close along the tool's y axis: the object's width there.
+                    width = 2 * (info.half[1] if abs(math.cos(psi)) > 0.5 else info.half[0])
+                    if not info.disk and width > PANDA_OPENING - 0.005:
+                        continue
+                    choices[f"psi{step.index}"] = psi
+                    grip = grip_of(problem, step, choices)
+                    targets.append((obj_pose @ _inv(grip.matrix(0.0)), psi))
+                q, psi = best_of(targets)
+                choices[f"psi{step.index}"] = psi
+            vals[f"k{k}"] = q
+            q_prev = q
+        elif step.kind == "place":
+            (k,) = step.keyframes
+            x, y, yaw = placements[f"p{step.index}"]
+            grasp = problem.steps[step.grasp_step]
+            grip = grip_of(problem, grasp, choices)
+            if planar:
+                phi = float(vals[f"g{grasp.index}"][0])
+                q = _planar_q(np.array([x, y, step.rest_z]), grip, phi)
+                P = pose_matrix(x, y, step.rest_z, yaw)
+            else:
+                info = problem.bodies[step.obj]
+                turns = (0.0, math.pi) if not info.disk else QUARTERS
+                targets = [(pose_matrix(x, y, step.rest_z, yaw + d) @ _inv(grip.matrix(0.0)),
+                            yaw + d) for d in turns]
+                q, yaw_ = best_of(targets)
+                P = pose_matrix(x, y, step.rest_z, yaw_)
+            poses[step.obj] = P
+            vals[f"k{k}"] = q
+            q_prev = q
+        elif step.kind == "push":
+            k0, k1 = step.keyframes
+            obj_pose = poses[step.obj]
+            x, y, yaw = placements[f"p{step.index}"]
+            u = np.array([x, y]) - obj_pose[:2, 3]
+            u = u / np.linalg.norm(u) if np.linalg.norm(u) > 1e-9 else np.array([1.0, 0.0])
+            grip = grip_of(problem, step, choices)
+            if planar:
+                phi = _angle(u)
+                vals[f"g{step.index}"] = np.array([phi])
+                choices[f"z{step.index}"] = float(obj_pose[2, 3])
+                choices[f"yaw{step.index}"] = transforms.yaw_of(obj_pose)
+                grip = grip_of(problem, step, choices)
+                q0 = _planar_q(obj_pose[:3, 3], grip, phi)
+                q1 = _planar_q(np.array([x, y, obj_pose[2, 3]]), grip, phi)
+                yaw = transforms.yaw_of(obj_pose)
+            else:
+                alpha = _angle(-u)
+                psi = transforms.yaw_of(obj_pose) - alpha
+                vals[f"g{step.index}"] = np.array([psi])
+                G = _inv(grip.matrix(psi))
+                q0, _ = best_of([(obj_pose @ G, None)])
+                q_prev = q0
+                yaw = alpha + psi
+                q1, _ = best_of([(pose_matrix(x, y, obj_pose[2, 3], yaw) @ G, None)])
+            vals[f"k{k0}"], vals[f"k{k1}"] = q0, q1
+            poses[step.obj] = pose_matrix(x, y, obj_pose[2, 3], yaw)
+            q_prev = q1
+        elif step.kind == "move":
+            (k,) = step.keyframes
+            T = world.tool_pose(q_prev)
+            if step.target is not None:
+                from tampcli.optimize.stages import _target_rect
+
+                lo, hi = _target_rect(problem, step.target)
+                T = T.copy()
+                T[:2, 3] = 0.5 * (np.asarray(lo) + np.asarray(hi))
+            q = T[:2, 3].copy() if planar else best_of([(T, None)])[0]
+            vals[f"k{k}"] = np.clip(q, world.lower, world.upper)
+            q_prev = vals[f"k{k}"]
+    return vals, choices
+
+
+def _angle(v) -> float:
+    return float(math.atan2(v[1], v[0]))
+
+
+def _inv(t):
+    return transforms.pose_inverse(t)
+
+
+def _planar_q(obj_pos, grip: Grip, phi: float) -> np.ndarray:
+    c, _, _, _ = grip.parts(phi)
+    return np.asarray(obj_pos[:2], dtype=float) - c[:2]

@@ -1,0 +1,151 @@
+"""One SLSQP solve with exact Jacobians, a wall-time cap and stall detection.
+
+The NLP is given as `evaluate(x) -> Rows` (cost, its gradient, equality and
+inequality rows); one evaluation serves the objective and both constraint
+calls SLSQP makes at the same x.
+"""
+
+from __future__ import annotations
+
+import time
+import warnings
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import minimize
+
+FEASIBILITY = 1e-4  # m or rad: max violation still called feasible
+STALL_ITERATIONS = 25  # stop when the violation has not improved for this many iterations
+
+
+@dataclass(frozen=True)
+class NlpOutcome:
+    x: np.ndarray
+    status: str  # "solved" | "infeasible" | "limit"
+    cost: float
+    violation: float
+    worst: str | None  # the worst violated row, in words
+    iterations: int
+    kkt: float | None
+    message: str
+
+
+class _Stop(Exception):
+    pass
+
+
+class _Evaluator:
+    def __init__(self, evaluate, layout):
+        self.evaluate = evaluate
+        self.slices = layout.slices()
+        self.nx = layout.size
+        self._x = None
+        self._out = None
+        self.calls = 0
+
+    def __call__(self, x):
+        if self._x is not None and np.array_equal(x, self._x):
+            return self._out
+        self.calls += 1
+        rows = self.evaluate(x)
+        grad = np.zeros(self.nx)
+        for block, g in rows.cost_grad.items():
+            s = self.slices.get(block)
+            if s is not None:
+                grad[s] += g
+        eq, jeq = rows.eq.assemble(self.slices, self.nx)
+        ineq, jin = rows.ineq.assemble(self.slices, self.nx)
+        self._x = np.array(x, copy=True)
+        self._out = (rows.cost, grad, eq, jeq, ineq, jin, rows.eq.labels, rows.ineq.labels)
+        return self._out
+
+
+def violation_of(eq, ineq) -> tuple[float, int, str]:
+    """(max violation, index, "eq"/"ineq")."""
+    ve = np.abs(eq) if len(eq) else np.zeros(0)
+    vi = np.maximum(-ineq, 0.0) if len(ineq) else np.zeros(0)
+    best = (0.0, -1, "")
+    if len(ve) and ve.max() > best[0]:
+        best = (float(ve.max()), int(ve.argmax()), "eq")
+    if len(vi) and vi.max() > best[0]:
+        best = (float(vi.max()), int(vi.argmax()), "ineq")
+    return best
+
+
+def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float,
+              ftol: float = 1e-8) -> NlpOutcome:
+    ev = _Evaluator(evaluate, layout)
+    x0 = np.clip(np.asarray(x0, dtype=float), [b[0] for b in bounds], [b[1] for b in bounds])
+    history: list[float] = []
+    best = {"x": x0.copy(), "key": (np.inf, np.inf)}
+
+    def track(x):
+        cost, _, eq, _, ineq, _, _, _ = ev(x)
+        v = violation_of(eq, ineq)[0]
+        key = (max(v - FEASIBILITY, 0.0), cost)
+        if key < best["key"]:
+            best["x"], best["key"] = np.array(x, copy=True), key
+        return v
+
+    def callback(xk):
+        v = track(xk)
+        history.append(v)
+        if time.perf_counter() > deadline:
+            raise _Stop("time")
+        if len(history) > STALL_ITERATIONS and v > 10 * FEASIBILITY:
+            if min(history[-STALL_ITERATIONS:]) > 0.99 * min(history[:-STALL_ITERATIONS]):
+                raise _Stop("stall")
+
+    constraints = []
+    _, _, eq0, _, ineq0, _, _, _ = ev(x0)
+    if len(eq0):
+        constraints.append({"type": "eq", "fun": lambda x: ev(x)[2], "jac": lambda x: ev(x)[3]})
+    if len(ineq0):
+        constraints.append({"type": "ineq", "fun": lambda x: ev(x)[4],
+                            "jac": lambda x: ev(x)[5]})
+    track(x0)
+    reason = None
+    iterations = 0
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            res = minimize(lambda x: ev(x)[0], x0, jac=lambda x: ev(x)[1], method="SLSQP",
+                           bounds=bounds, constraints=constraints, callback=callback,
+                           options={"maxiter": max_iterations, "ftol": ftol})
+        iterations = int(res.get("nit", len(history)))
+        track(res.x)
+        message = str(res.message)
+        if res.status == 9:
+            reason = "iterations"
+    except _Stop as stop:
+        reason = str(stop)
+        iterations = len(history)
+        message = f"stopped: {reason}"
+    x = best["x"]
+    cost, grad, eq, jeq, ineq, jin, leq, lin = ev(x)
+    v, i, kind = violation_of(eq, ineq)
+    if v <= FEASIBILITY:
+        status = "solved"
+        worst = None
+    else:
+        status = "limit" if reason in ("time", "iterations") else "infeasible"
+        value = eq[i] if kind == "eq" else ineq[i]
+        worst = (leq if kind == "eq" else lin)[i].words(value)
+    kkt = _kkt(grad, eq, jeq, ineq, jin, x, bounds) if status == "solved" else None
+    return NlpOutcome(x, status, float(cost), v, worst, iterations, kkt, message)
+
+
+def _kkt(grad, eq, jeq, ineq, jin, x, bounds) -> float:
+    """|grad L| with least-squares multipliers on the active set (seed, Problem 3)."""
+    active = [jeq] if len(eq) else []
+    if len(ineq):
+        act = ineq <= 1e-6
+        if act.any():
+            active.append(jin[act])
+    free = np.array([lo + 1e-9 < xi < hi - 1e-9 for xi, (lo, hi) in zip(x, bounds, strict=True)])
+    g = grad[free]
+    if not active or not free.any():
+        return float(np.linalg.norm(g))
+    A = np.vstack(active)[:, free]
+    lam, *_ = np.linalg.lstsq(A.T, -g, rcond=None)
+    return float(np.linalg.norm(g + A.T @ lam))

@@ -1,0 +1,151 @@
+"""The "path" NLP of one motion phase: its interior waypoints, keyframes fixed.
+
+Per-phase NLPs (T-1 waypoints each) instead of one joint NLP: with the
+keyframes fixed the phases are independent, each NLP is small (SLSQP's work
+grows with the cube of the variables), and a failing phase is named. The
+cost is the seed's smoothness term, sum |q_{i+1} - q_i|^2 over the phase.
+Collision rows are taken at every interior waypoint and at
+`interpolation_checks` points inside every segment (the first and last
+segments too: they move with the first and last interior waypoints).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from tampcli.optimize import constraints as C
+from tampcli.optimize.collide import Held, collision_rows, row_keys
+from tampcli.optimize.expr import PoseX, held_posex
+from tampcli.optimize.grips import held_pose
+from tampcli.optimize.problem import Layout, MotionPhase, TrajectoryProblem
+from tampcli.optimize.stages import Rows
+
+
+def pose_of_matrix(t) -> PoseX:
+    t = np.asarray(t, dtype=float)
+    return PoseX(np.concatenate([t[:3, 3], t[:3, 0], t[:3, 1], t[:3, 2]]))
+
+
+def phase_layout(problem: TrajectoryProblem, T: int) -> Layout:
+    return Layout(tuple((f"w{i}", problem.n) for i in range(1, T)))
+
+
+def samples(T: int, checks: int):
+    """(tau, i, s): position tau = i + s along the phase, between waypoints i and i+1."""
+    out = []
+    for i in range(T):
+        for j in range(checks + 1):
+            s = j / (checks + 1)
+            if i == 0 and j == 0:
+                continue
+            out.append((i + s, i, s))
+    return out
+
+
+def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: Held | None,
+                  moved: dict, kin, checker, T: int, checks: int, rest_z: float | None,
+                  label: str):
+    """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed)."""
+    opts = problem.options
+    layout = phase_layout(problem, T)
+    poses = {name: pose_of_matrix(t) for name, t in moved.items()}
+    keys = row_keys(list(problem.bodies), m.sliding, held)
+    pts = samples(T, checks)
+    n = problem.n
+
+    def block(i):
+        return f"w{i}" if 0 < i < T else None
+
+    def evaluate(x):
+        w = x.reshape(T - 1, n)
+        qs = np.vstack([q_a, w, q_b])
+        rows = Rows()
+        d = np.diff(qs, axis=0)
+        rows.cost = float(np.sum(d * d))
+        for i in range(1, T):
+            rows.cost_grad[f"w{i}"] = 2.0 * (d[i - 1] - d[i])
+        for tau, i, s in pts:
+            q = (1 - s) * qs[i] + s * qs[i + 1]
+            weights = [(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
+                       if b is not None and wgt > 0]
+            ignore = set(m.sliding)
+            if tau < 1:
+                ignore |= m.leave_contact
+            if tau > T - 1:
+                ignore |= m.enter_contact
+            frame = kin.frame(q) if held is not None and held.t_block else None
+            collision_rows(rows.ineq, label, checker, q, weights, frame, held, poses, keys,
+                           ignore, opts.activation, opts.margin)
+        if m.kind == "push" and not problem.planar:
+            for i in range(1, T):
+                frame = kin.frame(qs[i])
+                H = held_posex(held_pose(frame, held.grip, held.t), f"w{i}", None)
+                C.upright(rows.eq, label, H, held.name)
+                C.rest_height(rows.eq, label, H, rest_z, "its support")
+        return rows
+
+    return evaluate, layout
+
+
+def via_points(problem: TrajectoryProblem, q_a, q_b, T: int, held_height: float, moved: dict,
+               rng) -> np.ndarray:
+    """(T-1, n) initial interior waypoints: lift, cross above the obstacles, descend."""
+    world = problem.world
+    q_a, q_b = np.asarray(q_a, float), np.asarray(q_b, float)
+    if problem.planar:
+        return _planar_detour(problem, q_a, q_b, T, moved)
+    ta, tb = world.tool_pose(q_a), world.tool_pose(q_b)
+    lo = np.minimum(ta[:2, 3], tb[:2, 3]) - 0.1
+    hi = np.maximum(ta[:2, 3], tb[:2, 3]) + 0.1
+    top = max(ta[2, 3], tb[2, 3])
+    for name, info in problem.bodies.items():
+        x, y = (moved[name][:2, 3] if name in moved else info.pose[:2])
+        r = info.radius
+        if x + r >= lo[0] and x - r <= hi[0] and y + r >= lo[1] and y - r <= hi[1]:
+            z = (moved[name][2, 3] if name in moved else info.pose[2]) + info.half[2]
+            if z < top + 0.6:
+                top = max(top, z + held_height + 0.08)
+    path = [q_a]
+    for t, q_seed in ((ta, q_a), (tb, q_b)):
+        up = t.copy()
+        up[2, 3] = top
+        q, res = world.ik(up, seed=q_seed, rng_seed=int(rng.integers(1 << 30)))
+        if res < 1e-3:
+            path.append(q)
+    path.append(q_b)
+    path = np.array(path)
+    seg = np.linalg.norm(np.diff(path, axis=0), axis=1) + 1e-9
+    cum = np.concatenate([[0.0], np.cumsum(seg)]) / np.sum(seg)
+    taus = np.arange(1, T) / T
+    return np.array([[np.interp(t, cum, path[:, j]) for j in range(path.shape[1])]
+                     for t in taus])
+
+
+def _planar_detour(problem, q_a, q_b, T, moved) -> np.ndarray:
+    """Straight line, bent around the first body it would cross (side chosen by clearance)."""
+    radius = problem.scene.robot.radius
+    taus = np.arange(1, T) / T
+    line = q_a + np.outer(taus, q_b - q_a)
+    d = q_b - q_a
+    length = np.linalg.norm(d)
+    if length < 1e-9:
+        return line
+    u = d / length
+    normal = np.array([-u[1], u[0]])
+    base_z = float(problem.scene.robot.base_pose[2, 3])
+    h = problem.scene.robot.height / 2
+    for name, info in problem.bodies.items():
+        centre = moved[name][:3, 3] if name in moved else np.array(info.pose[:3])
+        if centre[2] + info.half[2] < base_z - h + 0.005 or centre[2] - info.half[2] > base_z + h:
+            continue
+        rel = centre[:2] - q_a
+        along = rel @ u
+        across = rel @ normal
+        clear = info.radius + radius + 0.03
+        if 0 < along < length and abs(across) < clear:
+            side = -1.0 if across > 0 else 1.0
+            offset = side * (clear - abs(across)) + side * 0.02
+            bump = np.sin(np.pi * taus) * offset
+            line = line + np.outer(bump, normal)
+            break
+    return line

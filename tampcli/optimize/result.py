@@ -1,0 +1,56 @@
+"""TrajectoryResult: what a stage of the optimizer returns (a status, never an exception)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+STATUSES = ("solved", "infeasible", "limit")
+STAGES = ("final", "keyframes", "path")
+
+
+@dataclass(frozen=True)
+class TrajectoryResult:
+    """One stage's outcome for one skeleton.
+
+    cost: the seed's smoothness term, sum of squared joint displacements between
+        consecutive waypoints (path); sum over phases of |dq_keyframes|^2 / T
+        (keyframes: the least path cost through those keyframes, by Cauchy-Schwarz;
+        a local NLP optimum, hence `bound_kind = "heuristic"`); 0 for "final".
+    violation: max constraint violation at the returned point (m or rad).
+    worst_constraint: that violation in words, when not solved.
+    proved: the infeasibility follows from the skeleton and the scene alone
+        (lowering errors, an object larger than its region), not from an NLP failing.
+    """
+
+    status: str
+    stage: str
+    names: tuple[str, ...] = ()
+    cost: float | None = None
+    phase_costs: tuple[float, ...] = ()
+    violation: float = 0.0
+    worst_constraint: str | None = None
+    iterations: int = 0
+    nlp_solves: int = 0
+    seconds: float = 0.0
+    kkt_residual: float | None = None
+    bound_kind: str | None = None  # "proved" | "heuristic"
+    proved: bool = False
+    trajectory: np.ndarray | None = field(default=None, repr=False)
+    phases: tuple = ()  # tampcli.solution.Phase
+    object_poses: dict = field(default_factory=dict, repr=False)  # name -> [7-vector]
+    keyframes: dict = field(default_factory=dict, repr=False)  # block -> values (warm starts)
+    choices: dict = field(default_factory=dict, repr=False)  # discrete grip choices
+    placements: dict = field(default_factory=dict, repr=False)  # "p<step>" -> (x, y, yaw)
+    grasps: dict = field(default_factory=dict, repr=False)  # object -> 4x4 in tool frame
+
+    def __post_init__(self):
+        if self.status not in STATUSES:
+            raise ValueError(f"status must be one of {STATUSES}, got {self.status!r}")
+        if self.stage not in STAGES:
+            raise ValueError(f"stage must be one of {STAGES}, got {self.stage!r}")
+
+    @property
+    def solved(self) -> bool:
+        return self.status == "solved"

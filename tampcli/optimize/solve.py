@@ -1,0 +1,265 @@
+"""The SLSQP driver: one skeleton, one stage -> TrajectoryResult.
+
+final     -> one small NLP over the placements (no robot);
+keyframes -> the final NLP (for placements), IK keyframes, one NLP over keyframes;
+path      -> keyframes (unless `warm` has them for this skeleton), then one NLP per
+             motion phase with its two keyframes fixed; nothing is called solved
+             before `verify` passes at 10x the waypoint resolution.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+
+import numpy as np
+
+from tampcli.optimize import verify as verify_mod
+from tampcli.optimize.assemble import assemble, walk
+from tampcli.optimize.grips import Kinematics
+from tampcli.optimize.init import final_guess, keyframe_guess
+from tampcli.optimize.nlp import solve_nlp
+from tampcli.optimize.options import OptimizeOptions
+from tampcli.optimize.path import phase_rows_fn, via_points
+from tampcli.optimize.problem import TrajectoryProblem
+from tampcli.optimize.result import STAGES, TrajectoryResult
+from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
+
+GRIP_BOUND = 4 * math.pi
+
+
+class _Run:
+    """Per-call bookkeeping: deadline, counters, the checker and kinematics."""
+
+    def __init__(self, problem: TrajectoryProblem, stage: str):
+        self.problem = problem
+        self.stage = stage
+        self.t0 = time.perf_counter()
+        self.deadline = self.t0 + problem.options.time_limit
+        self.iterations = 0
+        self.nlp_solves = 0
+        self.kin = Kinematics(problem.world)
+        self.checker = problem.checker
+        self.start = np.asarray(problem.world.start, dtype=float)
+        self.rng = np.random.default_rng(problem.options.seed)
+
+    def result(self, status: str, **fields) -> TrajectoryResult:
+        fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")
+        return TrajectoryResult(status=status, stage=self.stage, names=self.problem.names,
+                                iterations=self.iterations, nlp_solves=self.nlp_solves,
+                                seconds=time.perf_counter() - self.t0, **fields)
+
+    def nlp(self, evaluate, layout, x0, bounds):
+        out = solve_nlp(evaluate, layout, x0, bounds, self.problem.options.max_iterations,
+                        self.deadline)
+        self.iterations += out.iterations
+        self.nlp_solves += 1
+        return out
+
+
+def solve(problem: TrajectoryProblem, stage: str, warm: TrajectoryResult | None = None,
+          options: OptimizeOptions | None = None) -> TrajectoryResult:
+    """Solve `stage` of the skeleton's NLP; never raises for a failed solve."""
+    if stage not in STAGES:
+        raise ValueError(f"stage must be one of {', '.join(STAGES)}, got {stage!r}")
+    if options is not None and options != problem.options:
+        problem = dataclasses.replace(problem, options=options)
+    run = _Run(problem, stage)
+    if problem.error is not None:
+        return run.result("infeasible", worst_constraint=problem.error, proved=True,
+                          bound_kind="proved", violation=math.inf)
+    try:
+        if stage == "final":
+            return _final(run, warm)
+        if stage == "keyframes":
+            return _keyframes(run, warm)
+        return _path(run, warm)
+    except np.linalg.LinAlgError as err:
+        return run.result("infeasible", worst_constraint=f"numerical failure: {err}",
+                          violation=math.inf)
+
+
+# ---------------------------------------------------------------- final
+
+
+def _too_small(problem) -> str | None:
+    """An object whose footprint fits its target region in no orientation (proved)."""
+    regions = {r.name: r for r in problem.scene.regions}
+    for step in problem.steps:
+        if step.kind in ("place", "push") and step.target in regions:
+            w, h = regions[step.target].size
+            info = problem.bodies[step.obj]
+            a, b = 2 * info.half[0], 2 * info.half[1]
+            if not ((a <= w and b <= h) or (b <= w and a <= h)):
+                return (f"{step.name}: {step.obj} ({100 * a:.0f} x {100 * b:.0f} cm) does not "
+                        f"fit region {step.target} ({100 * w:.0f} x {100 * h:.0f} cm)")
+    return None
+
+
+def _placements(run: _Run, warm):
+    """Run the final NLP; returns (outcome or None when there is nothing to place, values)."""
+    problem = run.problem
+    layout = final_layout(problem)
+    prior = warm.placements if warm is not None else None
+    vals, origins = final_guess(problem, prior)
+    if layout.size == 0:
+        return None, {}
+    bounds = [(-1e3, 1e3)] * layout.size
+    out = run.nlp(lambda x: final_rows(problem, layout.unpack(x), origins), layout,
+                  layout.pack(vals), bounds)
+    return out, {k: np.array(v) for k, v in layout.unpack(out.x).items()}
+
+
+def _final(run: _Run, warm) -> TrajectoryResult:
+    why = _too_small(run.problem)
+    if why:
+        return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
+    out, placements = _placements(run, warm)
+    if out is None:
+        return run.result("solved", cost=0.0)
+    if out.status != "solved":
+        return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
+                          placements=placements)
+    return run.result("solved", cost=0.0, violation=out.violation, placements=placements,
+                      kkt_residual=out.kkt)
+
+
+# ---------------------------------------------------------------- keyframes
+
+
+def _shares_prefix(problem, warm) -> bool:
+    return (warm is not None and warm.keyframes and len(warm.names) <= len(problem.names)
+            and tuple(problem.names[:len(warm.names)]) == tuple(warm.names))
+
+
+def _keyframes(run: _Run, warm) -> TrajectoryResult:
+    problem = run.problem
+    why = _too_small(problem)
+    if why:
+        return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
+    have = warm is not None and warm.placements and all(
+        f"p{s.index}" in warm.placements for s in problem.steps if s.kind in ("place", "push"))
+    if have and warm.names == problem.names:
+        placements = warm.placements
+    else:
+        out, placements = _placements(run, warm)
+        if out is not None and out.status != "solved":
+            return run.result(out.status, violation=out.violation,
+                              worst_constraint=f"placements: {out.worst}")
+    layout = keyframe_layout(problem)
+    world = problem.world
+    bounds = []
+    for name, _size in layout.blocks:
+        if name.startswith("k"):
+            bounds.extend(zip(world.lower, world.upper, strict=True))
+        else:
+            bounds.append((-GRIP_BOUND, GRIP_BOUND))
+    best = None
+    for attempt in range(2):
+        vals, choices = keyframe_guess(problem, placements, run.start, run.rng)
+        if attempt == 0 and _shares_prefix(problem, warm):
+            choices.update(warm.choices)
+            for block, v in warm.keyframes.items():
+                if block in vals and np.shape(v) == np.shape(vals[block]):
+                    vals[block] = np.array(v, dtype=float)
+
+        def evaluate(x, choices=choices):
+            return keyframe_rows(problem, layout.unpack(x), choices, run.kin, run.checker,
+                                 run.start)
+
+        out = run.nlp(evaluate, layout, layout.pack(vals), bounds)
+        if best is None or (out.status == "solved") or out.violation < best[0].violation:
+            best = (out, choices)
+        if out.status == "solved" or time.perf_counter() > run.deadline:
+            break
+    out, choices = best
+    kf = {k: np.array(v) for k, v in layout.unpack(out.x).items()}
+    T = problem.options.waypoints
+    qs = [run.start] + [kf[f"k{k}"] for k in range(problem.n_keyframes)]
+    phase_costs = tuple(float(np.sum((b - a) ** 2)) / T for a, b in zip(qs, qs[1:], strict=False))
+    if out.status != "solved":
+        return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
+                          keyframes=kf, choices=choices, placements=placements)
+    return run.result("solved", cost=out.cost, phase_costs=phase_costs,
+                      violation=out.violation, kkt_residual=out.kkt, keyframes=kf,
+                      choices=choices, placements=placements)
+
+
+# ---------------------------------------------------------------- path
+
+
+def _path(run: _Run, warm) -> TrajectoryResult:
+    problem = run.problem
+    if (warm is not None and warm.solved and warm.stage in ("keyframes", "path")
+            and warm.names == problem.names and warm.keyframes):
+        kfr = warm
+    else:
+        run.stage = "keyframes"
+        kfr = _keyframes(run, warm)
+        run.stage = "path"
+        if not kfr.solved:
+            return run.result(kfr.status, violation=kfr.violation,
+                              worst_constraint=kfr.worst_constraint, proved=kfr.proved)
+    kf, choices = kfr.keyframes, kfr.choices
+    contexts = walk(problem, kf, choices, run.start)
+    opts = problem.options
+    T = opts.waypoints
+    waypoints, kkts = {}, []
+    checks = opts.interpolation_checks
+    failing: set[int] = set()
+    for attempt in range(2):
+        for ctx in contexts:
+            if attempt and ctx.index not in failing:
+                continue
+            out = _solve_phase(run, ctx, T, checks)
+            if out.status != "solved":
+                label = _phase_label(problem, ctx.index)
+                return run.result(out.status, violation=out.violation,
+                                  worst_constraint=out.worst or label, keyframes=kf,
+                                  choices=choices, placements=kfr.placements)
+            waypoints[ctx.index] = out.x.reshape(T - 1, problem.n)
+            if out.kkt is not None:
+                kkts.append(out.kkt)
+        traj, phases, poses, grasps = assemble(problem, run.start, waypoints, contexts)
+        result = run.result("solved", cost=float(np.sum(np.diff(traj, axis=0) ** 2)),
+                            phase_costs=_phase_costs(traj, T, problem.n_keyframes),
+                            kkt_residual=max(kkts) if kkts else None, trajectory=traj,
+                            phases=phases, object_poses=poses, keyframes=kf, choices=choices,
+                            placements=kfr.placements, grasps=grasps)
+        problems = verify_mod.verify(problem, result)
+        if not problems:
+            return result
+        # A collision between the sample points: sample the failing phases finer once.
+        failing.clear()
+        failing.update({i for i, _ in verify_mod.failing_motions(problem, result)}
+                       or range(problem.n_keyframes))
+        checks = 2 * checks + 1
+        if time.perf_counter() > run.deadline:
+            break
+    return run.result("infeasible", violation=math.inf, worst_constraint=problems[0],
+                      keyframes=kf, choices=choices, placements=kfr.placements)
+
+
+def _phase_costs(traj, T, K):
+    d = np.sum(np.diff(traj, axis=0) ** 2, axis=1)
+    return tuple(float(np.sum(d[k * T:(k + 1) * T])) for k in range(K))
+
+
+def _phase_label(problem, k) -> str:
+    return f"motion {k} before {problem.step_of_keyframe(k).name}"
+
+
+def _solve_phase(run: _Run, ctx, T, checks):
+    problem = run.problem
+    m = problem.motions[ctx.index]
+    held_height = 0.0
+    if ctx.held is not None:
+        held_height = 2 * problem.bodies[ctx.held.name].half[2]
+    evaluate, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved,
+                                     run.kin, run.checker, T, checks, ctx.rest_z,
+                                     _phase_label(problem, ctx.index))
+    x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved, run.rng)
+    bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
+                      strict=True))
+    return run.nlp(evaluate, layout, x0.reshape(-1), bounds)

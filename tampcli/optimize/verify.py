@@ -1,0 +1,266 @@
+"""Independent feasibility check of a trajectory (what `validate` runs on solution.json).
+
+It trusts nothing the optimizer computed but the trajectory, the phases and the
+object poses at phase boundaries: grasps are re-derived from those poses,
+collisions are checked at `factor` points per segment (10x the waypoint
+resolution by default) with no margin, and every placement is re-measured.
+Contact allowances (the object being grasped in the last segment of the
+approach, its support at lift-off, what a pushed object slides on) are the
+modes' semantics, taken from the lowered problem.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from tampcli.geometry import transforms
+from tampcli.optimize.bodies import REST_TOLERANCE
+from tampcli.optimize.problem import TrajectoryProblem
+
+PENETRATION = 1e-3  # m: deeper is a collision (FCL's own accuracy is ~1e-4)
+RIGID = 2e-3  # m / rad: a held object's drift relative to the tool
+LIMIT = 1e-6  # rad / m beyond a joint limit
+
+
+def _pose(v) -> np.ndarray:
+    return transforms.pose_from_xyzquat(v)
+
+
+def _motion_phases(result) -> list[int]:
+    """Indices into result.phases of the phases that move (one per keyframe)."""
+    return [i for i, p in enumerate(result.phases) if p.end > p.start]
+
+
+def verify(problem: TrajectoryProblem, result, factor: int = 10) -> list[str]:
+    """Violations in words; empty = feasible."""
+    if problem.error is not None:
+        return [problem.error]
+    if result.trajectory is None or not len(result.phases):
+        return ["no trajectory"]
+    out: list[str] = []
+    traj = np.asarray(result.trajectory, dtype=float)
+    world = problem.world
+    lo, hi = world.lower - LIMIT, world.upper + LIMIT
+    bad = np.nonzero(np.any((traj < lo) | (traj > hi), axis=1))[0]
+    if len(bad):
+        i = int(bad[0])
+        j = int(np.argmax(np.maximum(lo - traj[i], traj[i] - hi)))
+        out.append(f"waypoint {i}: joint {world.joint_names[j]} = {traj[i, j]:.4f} outside "
+                   f"[{world.lower[j]:.4f}, {world.upper[j]:.4f}]")
+    moving = _motion_phases(result)
+    if len(moving) != problem.n_keyframes:
+        return out + [f"expected {problem.n_keyframes} motion phases for the plan, found "
+                      f"{len(moving)}"]
+    out += _check_objects(problem, result)
+    out += [msg for _, msg in failing_motions(problem, result, factor)]
+    return out
+
+
+def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
+    """[(motion index, message)] for collisions found at `factor` points per segment."""
+    traj = np.asarray(result.trajectory, dtype=float)
+    world, checker = problem.world, problem.checker
+    out = []
+    for k, pi in enumerate(_motion_phases(result)):
+        phase = result.phases[pi]
+        m = problem.motions[k]
+        before = {n: _pose(v[pi]) for n, v in result.object_poses.items()}
+        held = None
+        if phase.attached is not None:
+            grasp = transforms.pose_inverse(world.tool_pose(traj[phase.start])) @ before[
+                phase.attached]
+            held = (phase.attached, grasp)
+        others = {n: t for n, t in before.items() if n != phase.attached}
+        n_seg = phase.end - phase.start
+        worst = None
+        for i in range(n_seg):
+            a, b = traj[phase.start + i], traj[phase.start + i + 1]
+            for j in range(factor + (1 if i == n_seg - 1 else 0)):
+                s = j / factor
+                tau = i + s
+                ignore = set(m.sliding)
+                if tau < 1:
+                    ignore |= m.leave_contact
+                if tau > n_seg - 1:
+                    ignore |= m.enter_contact
+                if tau == 0 or tau == n_seg:
+                    # Keyframes: what the mode switch touches (the grasped object, the
+                    # support under a released one) is contact, not collision.
+                    ignore |= m.leave_contact if tau == 0 else m.enter_contact
+                q = (1 - s) * a + s * b
+                for c in checker.distances(q, others, held, frozenset(ignore), 0.0):
+                    if c.distance < -PENETRATION and (worst is None or c.distance < worst[0]):
+                        worst = (c.distance, tau, c)
+        if worst is not None:
+            d, tau, c = worst
+            out.append((k, f"{_label(problem, k)}: collision {c.a.partition(':')[2]} vs "
+                           f"{c.b.partition(':')[2]}: {100 * d:.1f} cm at waypoint "
+                           f"{phase.start + tau:.1f}"))
+    return out
+
+
+def _label(problem, k) -> str:
+    step = problem.step_of_keyframe(k)
+    return step.name if problem.motions[k].kind == "push" or step.kind == "move" else \
+        f"motion before {step.name}"
+
+
+def _check_objects(problem: TrajectoryProblem, result) -> list[str]:
+    out = []
+    traj = np.asarray(result.trajectory, dtype=float)
+    world = problem.world
+    poses = {n: [_pose(v) for v in vs] for n, vs in result.object_poses.items()}
+    for name in problem.bodies:
+        if not problem.bodies[name].fixed and name not in poses:
+            out.append(f"object {name}: no poses in the solution")
+    if out:
+        return out
+    n_phases = len(result.phases)
+    for name, vs in poses.items():
+        if len(vs) != n_phases + 1:
+            return [f"object {name}: {len(vs)} poses for {n_phases} phases"]
+    regions = {r.name: r for r in problem.scene.regions}
+    steps = {s.name: s for s in problem.steps}
+    step_iter = iter(problem.steps)
+    for pi, phase in enumerate(result.phases):
+        for name, vs in poses.items():
+            if name == phase.attached and phase.end > phase.start:
+                g0 = transforms.pose_inverse(world.tool_pose(traj[phase.start])) @ vs[pi]
+                g1 = transforms.pose_inverse(world.tool_pose(traj[phase.end])) @ vs[pi + 1]
+                drift = _distance(g0, g1)
+                if drift > RIGID:
+                    out.append(f"phase {pi}: {name} moves relative to the tool by "
+                               f"{100 * drift:.1f} cm")
+            elif _distance(vs[pi], vs[pi + 1]) > 1e-6 and not (
+                    phase.action is not None and phase.start == phase.end):
+                out.append(f"phase {pi} ({phase.action or 'motion'}): {name} moves but is not "
+                           "attached")
+        if phase.action is None:
+            continue
+        step = next(step_iter, None)
+        while step is not None and step.name != phase.action:
+            step = next(step_iter, None)
+        if step is None:
+            step = steps.get(phase.action)
+        if step is None:
+            continue
+        after = poses[step.obj][pi + 1] if step.obj else None
+        if step.kind == "grasp":
+            out += _check_grasp(problem, step, world.tool_pose(traj[phase.end]), after)
+        if step.kind in ("place", "push"):
+            out += _check_rest(problem, step, after, poses, pi + 1, regions)
+    return out
+
+
+def _distance(a, b) -> float:
+    return float(np.linalg.norm(a[:3, 3] - b[:3, 3]) +
+                 np.linalg.norm(transforms.rotation_log(a[:3, :3].T @ b[:3, :3])))
+
+
+def _check_grasp(problem, step, tool, obj) -> list[str]:
+    info = problem.bodies[step.obj]
+    d = tool[:3, 3] - obj[:3, 3]
+    if problem.planar:
+        reach = problem.scene.robot.radius + max(info.half[0], info.half[1]) + 2e-3
+        if math.hypot(d[0], d[1]) > reach:
+            return [f"{step.name}: the robot does not touch {step.obj} "
+                    f"({100 * (math.hypot(d[0], d[1]) - reach):.1f} cm away)"]
+        return []
+    local = obj[:3, :3].T @ d
+    if np.any(np.abs(local) > np.array(info.half) + 2e-3):
+        return [f"{step.name}: the grasp point is outside {step.obj}"]
+    if tool[2, 2] > -0.99:
+        return [f"{step.name}: the gripper does not point down"]
+    return []
+
+
+def _check_rest(problem, step, pose, poses, boundary, regions) -> list[str]:
+    out = []
+    info = problem.bodies[step.obj]
+    if pose[2, 2] < 1 - 1e-3:
+        out.append(f"{step.name}: {step.obj} is not upright")
+    support = problem.bodies[step.support]
+    if step.support in poses:
+        s_pose = poses[step.support][boundary]
+    else:
+        s_pose = transforms.pose_from_xyzquat(problem.scene.body(step.support).pose)
+    top = s_pose[2, 3] + support.half[2]
+    gap = pose[2, 3] - info.half[2] - top
+    if abs(gap) > REST_TOLERANCE:
+        out.append(f"{step.name}: {step.obj} is {100 * gap:+.1f} cm off the top of "
+                   f"{step.support}")
+    if step.target in regions:
+        r = regions[step.target]
+        corners = _footprint(info, pose)
+        outside = max(float(np.max(np.asarray(r.lower) - corners)),
+                      float(np.max(corners - np.asarray(r.upper))))
+        if outside > 1e-3:
+            out.append(f"{step.name}: footprint outside region {r.name} by "
+                       f"{100 * outside:.1f} cm")
+    elif step.target is not None:
+        local = s_pose[:3, :3].T @ (pose[:3, 3] - s_pose[:3, 3])
+        if np.any(np.abs(local[:2]) > np.array(support.half[:2]) + 1e-3):
+            out.append(f"{step.name}: {step.obj}'s centre is off {step.target}")
+    return out
+
+
+def _footprint(info, pose) -> np.ndarray:
+    if info.disk:
+        r = info.half[0]
+        return pose[:2, 3] + np.array([[-r, -r], [r, r], [-r, r], [r, -r]])
+    hx, hy = info.half[0], info.half[1]
+    pts = np.array([[a * hx, b * hy, 0.0] for a in (-1, 1) for b in (-1, 1)])
+    return (pts @ pose[:3, :3].T + pose[:3, 3])[:, :2]
+
+
+# ---------------------------------------------------------------- solution files
+
+
+class _Op:
+    def __init__(self, text: str):
+        parts = text.strip().strip("()").split()
+        self.name = "(" + " ".join(p.lower() for p in parts) + ")"
+        self.action = parts[0].lower() if parts else ""
+        self.args = tuple(p.lower() for p in parts[1:])
+
+
+def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]:
+    """`verify` on a solution.json (scene and modes found as SPEC.md says)."""
+    from tampcli import solution as solution_mod
+    from tampcli.errors import SolutionFileError
+    from tampcli.geometry import scene as scene_mod
+    from tampcli.geometry.world import World
+    from tampcli.optimize.problem import lower
+    from tampcli.optimize.result import TrajectoryResult
+    from tampcli.pddl import parser
+
+    sol = solution_mod.read(path)
+    domain_path = Path(domain_path) if domain_path else solution_mod.resolve_input(path,
+                                                                                  sol.domain)
+    problem_path = Path(problem_path) if problem_path else solution_mod.resolve_input(
+        path, sol.problem)
+    scene_path = solution_mod.resolve_input(path, sol.scene)
+    if scene_path is None:
+        return []  # symbolic solution: nothing geometric to check
+    if not scene_path.is_file():
+        raise SolutionFileError(f"scene file not found: {scene_path}", str(path), key="scene")
+    domain = parser.parse_domain_file(str(domain_path))
+    problem_ast = parser.parse_problem_file(str(problem_path))
+    modes_path = solution_mod.resolve_input(path, sol.modes) if sol.modes else \
+        scene_mod.find_modes(domain_path)
+    modes = scene_mod.load_modes(modes_path, domain) if modes_path else {}
+    scene = scene_mod.load_scene(scene_path, domain, problem_ast, geometric=False)
+    with World(scene) as world:
+        if sol.robot.get("joints") and tuple(sol.robot["joints"]) != tuple(world.joint_names):
+            return [f"robot joints {sol.robot['joints']} do not match the scene's "
+                    f"{list(world.joint_names)}"]
+        problem = lower([_Op(a) for a in sol.plan], scene, modes, world, domain=domain)
+        result = TrajectoryResult(
+            "solved", "path", problem.names, trajectory=np.array(sol.trajectory, dtype=float),
+            phases=sol.phases, object_poses=sol.objects)
+        if sol.status != "solved":
+            return [f"the solution's status is {sol.status}: {sol.reason or 'no reason given'}"]
+        return verify(problem, result)

@@ -1,0 +1,51 @@
+"""Grips, reach and the resting geometry a skeleton walks through (shared by the stages)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tampcli.optimize.grips import Grip
+from tampcli.optimize.problem import PANDA_FINGER_DEPTH, PUSH_STANDOFF, Step, TrajectoryProblem
+
+PANDA_REACH = 0.855  # m, from the shoulder
+PANDA_SHOULDER = 0.333  # m above the base
+
+
+def grip_of(problem: TrajectoryProblem, step: Step, choices: dict) -> Grip:
+    """How `step`'s object hangs from the tool (step = the grasp or push)."""
+    info = problem.bodies[step.obj]
+    if problem.planar:
+        base_z = float(problem.scene.robot.base_pose[2, 3])
+        rho = problem.scene.robot.radius + max(info.half[0], info.half[1])
+        z = choices.get(f"z{step.index}", info.pose[2])
+        return Grip("side", (0.0, 0.0, z - base_z), rho=rho,
+                    yaw=choices.get(f"yaw{step.index}", info.pose[3]))
+    if step.kind == "push":
+        rho = max(info.half[0], info.half[1]) + PUSH_STANDOFF
+        return Grip("push", (-rho, 0.0, 0.0))
+    depth = min(PANDA_FINGER_DEPTH, info.half[2])
+    return Grip("top", (0.0, 0.0, info.half[2] - depth), psi=choices.get(f"psi{step.index}", 0.0))
+
+
+def reach_of(problem: TrajectoryProblem) -> tuple[np.ndarray, float]:
+    """(centre, radius) of a ball the tool cannot leave; infinite for the planar robot."""
+    base = problem.scene.robot.base_pose
+    if problem.planar:
+        return base[:3, 3], math.inf
+    if problem.scene.robot.model == "panda":
+        return base[:3, 3] + base[:3, 2] * PANDA_SHOULDER, PANDA_REACH
+    world = problem.world
+    rng = np.random.default_rng(0)
+    lo = np.where(np.isfinite(world.lower), world.lower, -math.pi)
+    hi = np.where(np.isfinite(world.upper), world.upper, math.pi)
+    centre = base[:3, 3]
+    far = max(np.linalg.norm(world.tool_pose(rng.uniform(lo, hi))[:3, 3] - centre)
+              for _ in range(300))
+    return centre, 1.05 * far
+
+
+def vertical_overlap(z_a: float, half_a: float, z_b: float, half_b: float) -> bool:
+    """Two upright bodies whose height ranges overlap by more than the rest tolerance."""
+    return min(z_a + half_a, z_b + half_b) - max(z_a - half_a, z_b - half_b) > 0.005

@@ -1,0 +1,8 @@
+(define (problem planar)
+  (:domain planar-push)
+  (:objects o - item start goal - region floor - surface)
+  (:init (at o start) (handempty) (liftable o)
+         (region-on start floor) (region-on goal floor)
+         (= (total-cost) 0))
+  (:goal (at o goal))
+  (:metric minimize (total-cost)))

@@ -1,0 +1,5 @@
+(define (problem wall)
+  (:domain arm-pick-place)
+  (:objects a - block start goal blocked - region)
+  (:init (at a start) (clear a) (handempty))
+  (:goal (at a goal)))
