@@ -1,0 +1,222 @@
+"""A kinematic tree in numpy: forward kinematics and point Jacobians.
+
+Built once from a body loaded in PyBullet (any URDF or multibody), then
+evaluated without touching the simulator: thousands of FK calls per NLP
+would otherwise each pay resetJointState + getLinkState.
+
+Link frames are URDF link frames (PyBullet's getLinkState[4:6]), not the
+centre-of-mass frames. The joint origins and axes are measured from the
+simulator at init (PyBullet moves origins into inertial frames, so reading
+its joint info directly would need that bookkeeping).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from tampcli.geometry import transforms
+
+REVOLUTE, PRISMATIC, FIXED = 0, 1, 4
+
+
+@dataclass(frozen=True)
+class ChainLink:
+    name: str
+    parent: int  # index into Chain.links, -1 for the base link itself
+    origin: np.ndarray  # 4x4, child frame in parent frame at joint value 0
+    joint_type: int  # REVOLUTE, PRISMATIC or FIXED
+    axis: np.ndarray  # (3,) unit, in the child frame
+    q_index: int  # index in q, or -1 when the joint is not an optimization variable
+    fixed_value: float  # joint value used when q_index == -1
+    pb_index: int  # PyBullet link index (-1: base)
+
+
+class Chain:
+    """Forward kinematics of a tree of links; link 0 is the base."""
+
+    def __init__(self, links: list[ChainLink], base_pose: np.ndarray, n: int):
+        self.links = tuple(links)
+        self.names = tuple(link.name for link in links)
+        self.index = {name: i for i, name in enumerate(self.names)}
+        self.n = n
+        self.base_pose = np.array(base_pose, dtype=float)
+        self._plan = []
+        for i, link in enumerate(links[1:], start=1):
+            origin = link.origin.copy()
+            # A joint that is not a variable is fixed at its value: fold it in.
+            if link.q_index < 0 and link.joint_type != FIXED and link.fixed_value != 0.0:
+                origin = origin @ _motion(link.joint_type, link.axis, link.fixed_value)
+            kind = link.joint_type if link.q_index >= 0 else FIXED
+            z_axis = kind == REVOLUTE and np.allclose(link.axis, (0.0, 0.0, 1.0))
+            self._plan.append((i, link.parent, origin, kind, link.axis, link.q_index, z_axis))
+        # Which variables move each link: ancestors' joints in q.
+        self.moved_by = np.zeros((len(links), n), dtype=bool)
+        self.joint_link = np.full(n, -1)  # q index -> link whose joint it is
+        self.joint_type = np.zeros(n, dtype=int)
+        self.joint_axis = np.zeros((n, 3))
+        for i, link in enumerate(links):
+            if i > 0:
+                self.moved_by[i] = self.moved_by[link.parent]
+            if link.q_index >= 0:
+                self.moved_by[i, link.q_index] = True
+                self.joint_link[link.q_index] = i
+                self.joint_type[link.q_index] = link.joint_type
+                self.joint_axis[link.q_index] = link.axis
+        self.revolute = self.joint_type == REVOLUTE
+        self._has_prismatic = bool(np.any(~self.revolute))
+
+    def fk_list(self, q) -> list[np.ndarray]:
+        """World 4x4 frames of all links, in `names` order."""
+        q = np.asarray(q, dtype=float)
+        frames = [None] * len(self.links)
+        frames[0] = self.base_pose
+        for i, parent, origin, kind, axis, qi, z_axis in self._plan:
+            if kind == FIXED:
+                local = origin
+            elif z_axis:
+                c, s = math.cos(q[qi]), math.sin(q[qi])
+                local = origin.copy()
+                r0 = origin[:3, 0].copy()
+                r1 = origin[:3, 1]
+                local[:3, 0] = c * r0 + s * r1
+                local[:3, 1] = c * r1 - s * r0
+            else:
+                local = origin @ _motion(kind, axis, q[qi])
+            frames[i] = frames[parent] @ local
+        return frames
+
+    def joint_axes(self, frames) -> tuple[np.ndarray, np.ndarray]:
+        """World axes (n, 3) and origins (n, 3) of the q joints, for a set of frames."""
+        axes = np.empty((self.n, 3))
+        origins = np.empty((self.n, 3))
+        for qi in range(self.n):
+            frame = frames[self.joint_link[qi]]
+            axes[qi] = frame[:3, :3] @ self.joint_axis[qi]
+            origins[qi] = frame[:3, 3]
+        return axes, origins
+
+    def point_jacobian(self, axes, origins, link: int, point) -> np.ndarray:
+        """(3, n) d point / d q for a world point rigidly attached to `link`.
+
+        `axes`, `origins` from `joint_axes` of the same frames.
+        """
+        d = np.asarray(point, dtype=float) - origins
+        ax, ay, az = axes[:, 0], axes[:, 1], axes[:, 2]
+        dx, dy, dz = d[:, 0], d[:, 1], d[:, 2]
+        jac = np.array([ay * dz - az * dy, az * dx - ax * dz, ax * dy - ay * dx])
+        if self._has_prismatic:
+            jac[:, ~self.revolute] = axes[~self.revolute].T
+        jac[:, ~self.moved_by[link]] = 0.0
+        return jac
+
+    def jacobian_from_frames(self, frames, link: int, point) -> np.ndarray:
+        """(3, n) d point / d q for a world point rigidly attached to `link`."""
+        axes, origins = self.joint_axes(frames)
+        return self.point_jacobian(axes, origins, link, point)
+
+    def angular_jacobian_from_frames(self, frames, link: int) -> np.ndarray:
+        """(3, n) angular velocity of `link` per joint velocity."""
+        axes, _ = self.joint_axes(frames)
+        jac = axes.T.copy()
+        jac[:, ~(self.moved_by[link] & self.revolute)] = 0.0
+        return jac
+
+
+def _motion(kind: int, axis: np.ndarray, value: float) -> np.ndarray:
+    t = np.eye(4)
+    if kind == REVOLUTE:
+        t[:3, :3] = _axis_angle(axis, value)
+    elif kind == PRISMATIC:
+        t[:3, 3] = axis * value
+    return t
+
+
+def _axis_angle(axis, angle: float) -> np.ndarray:
+    x, y, z = axis
+    c, s = math.cos(angle), math.sin(angle)
+    k = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+    return np.eye(3) + s * k + (1.0 - c) * (k @ k)
+
+
+def measure_chain(pb, client: int, body: int, variables: dict[str, int],
+                  fixed_values: dict[int, float], link_names: dict[int, str] | None = None,
+                  ) -> Chain:
+    """Build the Chain of a PyBullet body.
+
+    `variables` maps joint name -> index in q; `fixed_values` gives the value
+    of other movable joints (fingers). The simulator state is restored.
+    """
+    n_joints = pb.getNumJoints(body, physicsClientId=client)
+    infos = [pb.getJointInfo(body, j, physicsClientId=client) for j in range(n_joints)]
+    saved = [pb.getJointState(body, j, physicsClientId=client)[0] for j in range(n_joints)]
+    movable = [j for j in range(n_joints) if infos[j][2] in (REVOLUTE, PRISMATIC)]
+
+    def frames_at(values: dict[int, float]):
+        for j in movable:
+            pb.resetJointState(body, j, values.get(j, 0.0), physicsClientId=client)
+        out = {-1: _base_frame(pb, client, body)}
+        for j in range(n_joints):
+            state = pb.getLinkState(body, j, computeForwardKinematics=True,
+                                    physicsClientId=client)
+            out[j] = transforms.pose(transforms.quat_to_matrix(state[5]), state[4])
+        return out
+
+    try:
+        zero = frames_at({})
+        base_name = pb.getBodyInfo(body, physicsClientId=client)[0].decode()
+        names = dict(link_names or {})
+        links = [ChainLink(names.get(-1, base_name), -1, np.eye(4), FIXED, np.zeros(3), -1,
+                           0.0, -1)]
+        pb_to_chain = {-1: 0}
+        for j in range(n_joints):
+            info = infos[j]
+            parent_pb = info[16]
+            origin = _clean(transforms.pose_inverse(zero[parent_pb]) @ zero[j])
+            joint_name = info[1].decode()
+            kind = info[2] if info[2] in (REVOLUTE, PRISMATIC) else FIXED
+            axis = np.zeros(3)
+            if kind != FIXED:
+                moved = frames_at({j: 0.5})[j]
+                rel = transforms.pose_inverse(zero[j]) @ moved
+                if kind == REVOLUTE:
+                    axis = transforms.rotation_log(rel[:3, :3]) / 0.5
+                else:
+                    axis = rel[:3, 3] / 0.5
+                axis = _snap(axis / np.linalg.norm(axis))
+            links.append(ChainLink(names.get(j, info[12].decode()), pb_to_chain[parent_pb],
+                                   origin, kind, axis, variables.get(joint_name, -1),
+                                   fixed_values.get(j, 0.0), j))
+            pb_to_chain[j] = len(links) - 1
+    finally:
+        for j in movable:
+            pb.resetJointState(body, j, saved[j], physicsClientId=client)
+    return Chain(links, zero[-1], len(variables))
+
+
+def _base_frame(pb, client: int, body: int) -> np.ndarray:
+    """URDF frame of the base link (PyBullet reports its centre of mass)."""
+    pos, orn = pb.getBasePositionAndOrientation(body, physicsClientId=client)
+    inertial = pb.getDynamicsInfo(body, -1, physicsClientId=client)[3:5]
+    com = transforms.pose(transforms.quat_to_matrix(orn), pos)
+    local = transforms.pose(transforms.quat_to_matrix(inertial[1]), inertial[0])
+    return com @ transforms.pose_inverse(local)
+
+
+def _snap(v: np.ndarray, tol: float = 1e-6) -> np.ndarray:
+    """Round values within tol of 0 or +-1: PyBullet reports float32-rounded frames."""
+    out = np.array(v, dtype=float)
+    for target in (0.0, 1.0, -1.0):
+        out[np.abs(out - target) < tol] = target
+    return out
+
+
+def _clean(t: np.ndarray) -> np.ndarray:
+    out = t.copy()
+    out[:3, :3] = _snap(out[:3, :3])
+    u, _, vt = np.linalg.svd(out[:3, :3])
+    out[:3, :3] = _snap(u @ vt)
+    out[:3, 3] = np.round(out[:3, 3], 7)
+    return out

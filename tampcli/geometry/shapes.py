@@ -1,0 +1,182 @@
+"""FCL geometry for robot links and scene bodies, with bounding spheres.
+
+Meshes become their convex hull (as PyBullet treats a URDF or GEOM_MESH
+collision mesh), so FCL and PyBullet see the same solids and signed
+distances are defined (GJK/EPA need convex shapes).
+"""
+
+from __future__ import annotations
+
+import functools
+from dataclasses import dataclass
+
+import fcl
+import numpy as np
+from scipy.spatial import ConvexHull
+
+from tampcli.errors import SceneError
+from tampcli.geometry import transforms
+
+GEOM_SPHERE, GEOM_BOX, GEOM_CYLINDER, GEOM_MESH, GEOM_CAPSULE = 2, 3, 4, 5, 7
+
+
+@dataclass(frozen=True)
+class Shape:
+    """One convex solid rigidly attached to an owner frame."""
+
+    geometry: object  # an fcl.CollisionGeometry
+    local: np.ndarray  # 4x4 pose in the owner's frame
+    center: np.ndarray  # (3,) bounding-sphere centre in the owner's frame
+    radius: float  # bounding-sphere radius
+    kind: str = "convex"  # box | cylinder | sphere | capsule | convex
+    size: tuple[float, ...] = ()  # box extents; (radius, height); (radius,)
+    vertices: np.ndarray | None = None  # convex only, in the shape's own frame
+
+    def support(self, direction_local: np.ndarray) -> float:
+        """max over the solid of direction . x, in the shape's own frame."""
+        u = direction_local
+        if self.kind == "box":
+            return 0.5 * float(np.abs(u) @ np.asarray(self.size))
+        if self.kind == "sphere":
+            return self.size[0] * float(np.linalg.norm(u))
+        if self.kind == "cylinder":
+            r, h = self.size
+            return r * float(np.hypot(u[0], u[1])) + 0.5 * h * abs(float(u[2]))
+        if self.kind == "capsule":
+            r, h = self.size
+            return r * float(np.linalg.norm(u)) + 0.5 * h * abs(float(u[2]))
+        return float(np.max(self.vertices @ u))
+
+    def support_point(self, direction_local: np.ndarray) -> np.ndarray:
+        """A point of the solid maximizing direction . x (own frame)."""
+        u = direction_local
+        if self.kind == "box":
+            return 0.5 * np.sign(u) * np.asarray(self.size)
+        if self.kind == "sphere":
+            return self.size[0] * u / max(np.linalg.norm(u), 1e-12)
+        if self.kind in ("cylinder", "capsule"):
+            r, h = self.size
+            radial = np.array([u[0], u[1], 0.0])
+            norm = np.linalg.norm(radial)
+            point = np.array([0.0, 0.0, 0.5 * h * np.sign(u[2])])
+            if self.kind == "capsule":
+                return point + r * u / max(np.linalg.norm(u), 1e-12)
+            return point + (r * radial / norm if norm > 1e-12 else 0.0)
+        return self.vertices[int(np.argmax(self.vertices @ u))]
+
+
+def primitive(kind: str, size, local=None) -> Shape:
+    """A box (full extents), cylinder (radius, height, along z) or sphere (radius,)."""
+    local = np.eye(4) if local is None else np.asarray(local, dtype=float)
+    if kind == "box":
+        geom = fcl.Box(*size)
+        radius = 0.5 * float(np.linalg.norm(size))
+    elif kind == "cylinder":
+        r, h = size
+        geom = fcl.Cylinder(r, h)
+        radius = float(np.hypot(r, h / 2))
+    elif kind == "sphere":
+        geom = fcl.Sphere(size[0])
+        radius = float(size[0])
+    elif kind == "capsule":
+        r, h = size
+        geom = fcl.Capsule(r, h)
+        radius = r + h / 2
+    else:
+        raise ValueError(kind)
+    return Shape(geom, local, local[:3, 3].copy(), radius, kind, tuple(float(v) for v in size))
+
+
+def mesh_hull(path: str, scale=(1.0, 1.0, 1.0), local=None) -> Shape:
+    """The convex hull of an OBJ file's vertices, scaled, as an fcl.Convex."""
+    local = np.eye(4) if local is None else np.asarray(local, dtype=float)
+    vertices, faces = _hull(path, tuple(float(s) for s in scale))
+    geom = fcl.Convex(vertices, len(faces) // 4, faces)
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+    mid = 0.5 * (lo + hi)
+    radius = float(np.max(np.linalg.norm(vertices - mid, axis=1)))
+    return Shape(geom, local, local[:3, :3] @ mid + local[:3, 3], radius, "convex", (), vertices)
+
+
+@functools.lru_cache(maxsize=64)
+def _hull(path: str, scale: tuple[float, float, float]):
+    """Hull vertices and FCL face list [3, i, j, k, ...], faces wound outward.
+
+    Cached by file and scale: the Panda's meshes are read once per process
+    (the results are never mutated).
+    """
+    points = read_obj_vertices(path) * np.array(scale)
+    try:
+        hull = ConvexHull(points)
+    except Exception as e:  # noqa: BLE001 - scipy raises QhullError for flat or tiny meshes
+        raise SceneError(f"mesh has no volume, cannot build its convex hull: {e}".split("\n")[0],
+                         path=path) from None
+    used = np.unique(hull.simplices)
+    remap = -np.ones(len(points), dtype=int)
+    remap[used] = np.arange(len(used))
+    vertices = points[used]
+    faces = []
+    for simplex, eq in zip(hull.simplices, hull.equations, strict=True):
+        a, b, c = points[simplex]
+        if np.dot(np.cross(b - a, c - a), eq[:3]) < 0:
+            simplex = simplex[[0, 2, 1]]
+        faces.extend((3, *remap[simplex]))
+    face_array = np.array(faces, dtype=np.int64)
+    vertices.flags.writeable = False
+    face_array.flags.writeable = False
+    return vertices, face_array
+
+
+def read_obj_vertices(path: str) -> np.ndarray:
+    """The `v x y z` lines of a Wavefront OBJ file, (n, 3)."""
+    rows = []
+    try:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            for number, line in enumerate(f, start=1):
+                if line.startswith("v "):
+                    parts = line.split()
+                    try:
+                        rows.append([float(v) for v in parts[1:4]])
+                    except (ValueError, IndexError):
+                        raise SceneError(f"bad vertex line {line.strip()!r}", path=path,
+                                         line=number) from None
+    except OSError as e:
+        raise SceneError(f"cannot read mesh: {e.strerror}", path=path) from None
+    if len(rows) < 4:
+        raise SceneError(f"a mesh needs at least 4 vertices, found {len(rows)}", path=path)
+    return np.array(rows, dtype=float)
+
+
+def pybullet_link_shapes(pb, client: int, body: int, link: int, fallback_mesh=None,
+                         fallback_scale=(1.0, 1.0, 1.0)) -> list[Shape]:
+    """Collision shapes of one link of a PyBullet body, in its URDF link frame.
+
+    PyBullet reports each shape relative to the link's inertial frame.
+    """
+    inertial = pb.getDynamicsInfo(body, link, physicsClientId=client)[3:5]
+    to_link = transforms.pose(transforms.quat_to_matrix(inertial[1]), inertial[0])
+    shapes = []
+    for data in pb.getCollisionShapeData(body, link, physicsClientId=client):
+        kind, dims, filename = data[2], data[3], data[4]
+        local = to_link @ transforms.pose(transforms.quat_to_matrix(data[6]), data[5])
+        if kind == GEOM_BOX:
+            shapes.append(primitive("box", dims, local))
+        elif kind == GEOM_SPHERE:
+            shapes.append(primitive("sphere", dims[:1], local))
+        elif kind == GEOM_CYLINDER:
+            shapes.append(primitive("cylinder", (dims[1], dims[0]), local))
+        elif kind == GEOM_CAPSULE:
+            shapes.append(primitive("capsule", (dims[1], dims[0]), local))
+        elif kind == GEOM_MESH:
+            name = filename.decode() if isinstance(filename, bytes) else filename
+            if name in ("", "unknown_file"):
+                if fallback_mesh is None:
+                    continue
+                shapes.append(mesh_hull(fallback_mesh, fallback_scale, local))
+            else:
+                shapes.append(mesh_hull(name, dims, local))
+    return shapes
+
+
+def fcl_transform(t: np.ndarray) -> fcl.Transform:
+    return fcl.Transform(t[:3, :3], t[:3, 3])

@@ -1,0 +1,62 @@
+"""Geometric checks of a scene's start state: overlaps, joint limits, collisions.
+
+Resting contact is not overlap: bodies may interpenetrate by up to
+OVERLAP_TOLERANCE (a few mm of modelling slack), and the robot's base may
+touch the body it stands on.
+"""
+
+from __future__ import annotations
+
+from tampcli.errors import SceneError, source_line_at
+
+OVERLAP_TOLERANCE = 0.003  # m
+LIMIT_TOLERANCE = 1e-6  # rad or m
+
+
+def start_problems(world, checker) -> list[tuple[str, str, str]]:
+    """(key, subject, message) for each problem of the start state; empty when fine."""
+    problems = []
+    scene = world.scene
+    bodies = scene.bodies
+    for i, a in enumerate(bodies):
+        for b in bodies[i + 1:]:
+            if a.fixed and b.fixed and a.obstacle and b.obstacle:
+                # Two obstacles may be modelled as one solid built from parts.
+                continue
+            c = checker.body_distance(a.name, a.matrix, b.name, b.matrix)
+            if c.distance < -OVERLAP_TOLERANCE:
+                problems.append(("objects.pose", a.name, f"{a.name!r} and {b.name!r} overlap by "
+                                 f"{-c.distance * 1000:.1f} mm in the start state"))
+    q = world.start
+    for name, v, lo, hi in zip(world.joint_names, q, world.lower, world.upper, strict=True):
+        if v < lo - LIMIT_TOLERANCE or v > hi + LIMIT_TOLERANCE:
+            problems.append(("robot.start", "", f"joint {name} = {v:.4g} is outside its limits "
+                             f"[{lo:.4g}, {hi:.4g}]"))
+    for c in checker.distances(q, activation=0.0, static=True):
+        if c.distance < -OVERLAP_TOLERANCE:
+            problems.append(("robot.start", "", f"the start configuration is in collision: "
+                             f"{c.a} and {c.b} overlap by {-c.distance * 1000:.1f} mm"))
+    return problems
+
+
+def check_start_state(scene, src=None) -> None:
+    """Raise a located SceneError for the first problem of the start state."""
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.world import World
+
+    with World(scene) as world:
+        problems = start_problems(world, CollisionChecker(world))
+    if not problems:
+        return
+    key, subject, message = problems[0]
+    line = None
+    if key == "objects.pose":
+        index = next(i for i, b in enumerate(scene.bodies) if b.name == subject)
+        line = src.line("objects", index, "pose") if src else scene.bodies[index].line
+    elif src is not None:
+        line = src.line("robot", 0, "start")
+    else:
+        line = scene.robot.line
+    text = src.text if src is not None else None
+    raise SceneError(message, path=scene.path, line=line, key=key,
+                     source_line=source_line_at(text, line) if text else None)

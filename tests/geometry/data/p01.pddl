@@ -1,0 +1,5 @@
+(define (problem geo-p01)
+  (:domain geo-test)
+  (:objects a b - block table - surface goal - region)
+  (:init (on a table) (on b table) (clear a) (clear b) (handempty))
+  (:goal (on a goal)))

@@ -1,0 +1,199 @@
+import numpy as np
+import pytest
+
+from tampcli.geometry import transforms
+from tampcli.geometry.collision import CollisionChecker
+from tampcli.geometry.world import World
+
+from .worlds import panda_scene, planar_scene
+
+# PyBullet pads each convex mesh with a 1 mm collision margin; primitives have none.
+PYBULLET_MESH_MARGIN = 0.001
+
+
+@pytest.fixture(scope="module")
+def panda():
+    with World(panda_scene()) as world:
+        yield world, CollisionChecker(world)
+
+
+@pytest.fixture(scope="module")
+def planar():
+    with World(planar_scene()) as world:
+        yield world, CollisionChecker(world)
+
+
+def _pybullet_ids(world, name):
+    kind, _, bare = name.partition(":")
+    if kind == "link":
+        return world.robot_id, world.chain.links[world.chain.index[bare]].pb_index
+    return world.pb_body(bare), -1
+
+
+def _compare_with_pybullet(world, checker, configurations, activation):
+    pb, client = world.pb, world.client
+    compared = 0
+    try:
+        for q in configurations:
+            world.set_state(q)
+            for contact in checker.distances(q, activation=activation):
+                (ua, la), (ub, lb) = _pybullet_ids(world, contact.a), _pybullet_ids(world, contact.b)
+                points = pb.getClosestPoints(ua, ub, 0.5, la, lb, physicsClientId=client)
+                assert points, (contact.a, contact.b)
+                margin = PYBULLET_MESH_MARGIN * sum(
+                    n.startswith("link:") and world.scene.robot.model == "panda"
+                    for n in (contact.a, contact.b))
+                theirs = min(p[8] for p in points) + margin
+                if contact.distance > 0 and theirs > 0:
+                    assert abs(theirs - contact.distance) < 0.002, (contact, theirs)
+                elif contact.distance < -0.002:
+                    assert theirs < 0, (contact, theirs)
+                elif theirs < -0.002:
+                    assert contact.distance < 0, (contact, theirs)
+                compared += 1
+    finally:
+        world.set_state(world.start, {b.name: b.matrix for b in world.scene.bodies})
+    return compared
+
+
+def _random_qs(world, count, seed):
+    rng = np.random.default_rng(seed)
+    return [rng.uniform(world.lower, world.upper) for _ in range(count)]
+
+
+@pytest.mark.parametrize(("name", "activation"), [("panda", 0.1), ("planar", 0.4)])
+def test_signed_distances_match_pybullet(name, activation, request):
+    world, checker = request.getfixturevalue(name)
+    compared = _compare_with_pybullet(world, checker, _random_qs(world, 200, seed=11), activation)
+    assert compared > 100
+
+
+def test_penetration_sign_and_normal(planar):
+    world, checker = planar
+    # The disk (radius 0.05, 5 cm tall) 3.5 cm deep into the wall's face at x = 0.275;
+    # lifting it out (5 cm) would take longer than backing out.
+    q = np.array([0.26, 0.0])
+    contact = checker.pair_distance(q, "link:planar_body", "body:wall")
+    assert contact.distance == pytest.approx(-0.035, abs=1e-4)
+    np.testing.assert_allclose(contact.normal, [1.0, 0.0, 0.0], atol=1e-3)
+    np.testing.assert_allclose(contact.gradient, [-1.0, 0.0], atol=1e-3)
+    q = np.array([0.2, 0.0])
+    contact = checker.pair_distance(q, "link:planar_body", "body:wall")
+    assert contact.distance == pytest.approx(0.025, abs=1e-5)
+    np.testing.assert_allclose(contact.normal, [1.0, 0.0, 0.0], atol=1e-6)
+    np.testing.assert_allclose(contact.point_a, [0.25, 0.0, contact.point_a[2]], atol=1e-5)
+
+
+def _finite_difference(checker, q, contact, h=1e-4, **kw):
+    grad = np.zeros(len(q))
+    moved = 0.0
+    for i in range(len(q)):
+        dq = np.zeros(len(q))
+        dq[i] = h
+        plus = checker.pair_distance(q + dq, contact.a, contact.b, **kw)
+        minus = checker.pair_distance(q - dq, contact.a, contact.b, **kw)
+        grad[i] = (plus.distance - minus.distance) / (2 * h)
+        moved = max(moved, np.linalg.norm(plus.point_a - minus.point_a),
+                    np.linalg.norm(plus.point_b - minus.point_b))
+    return grad, moved
+
+
+@pytest.mark.parametrize(("name", "activation"), [("panda", 0.05), ("planar", 0.3)])
+def test_distance_gradients_match_finite_differences(name, activation, request):
+    world, checker = request.getfixturevalue(name)
+    checked = 0
+    for q in _random_qs(world, 30, seed=12):
+        for contact in checker.distances(q, activation=activation):
+            numeric, moved = _finite_difference(checker, q, contact)
+            if moved > 5e-3:  # the witness point jumped to another feature
+                continue
+            # GJK on curved shapes converges to ~1e-7 m: a 1e-4 step sees it.
+            curved = "ball" in contact.b or "post" in contact.b or name == "planar"
+            np.testing.assert_allclose(contact.gradient, numeric, atol=5e-3 if curved else 1e-4,
+                                       err_msg=f"{contact.a} {contact.b} {contact.distance}")
+            checked += 1
+    assert checked >= 10
+
+
+def test_held_object_contacts_and_gradient(panda):
+    world, checker = panda
+    grasp = transforms.pose(None, (0.0, 0.0, 0.0))
+    q = world.start.copy()
+    q[1] += 0.6  # lean forward: the held cube nears the table
+    contacts = checker.distances(q, held=("a", grasp), activation=0.5)
+    held = [c for c in contacts if c.a == "held:a"]
+    assert any(c.b == "body:table" for c in held)
+    assert all(c.b != "body:a" for c in contacts)
+    assert all(c.b not in ("link:panda_hand", "link:panda_leftfinger") for c in held)
+    table = next(c for c in held if c.b == "body:table")
+    numeric, _ = _finite_difference(checker, q, table, held=("a", grasp))
+    np.testing.assert_allclose(table.gradient, numeric, atol=1e-4)
+    # The held cube's centre is the tool point: its lowest corner is 0.0354 m below it.
+    tool_z = world.tool_pose(q)[2, 3]
+    assert table.distance == pytest.approx(tool_z - 0.025 * np.sqrt(2) * 0 - 0.025, abs=0.02)
+
+
+def test_self_collision_pairs_exclude_adjacent_links(panda):
+    world, checker = panda
+    names = {(checker.link_parts[a].owner, checker.link_parts[b].owner)
+             for a, b in checker.self_pairs}
+    assert ("link:panda_link1", "link:panda_link2") not in names
+    assert ("link:panda_link5", "link:panda_link6") not in names
+    assert ("link:panda_hand", "link:panda_leftfinger") not in names
+    assert ("link:panda_link1", "link:panda_hand") in names
+    # Folding the arm onto itself is reported as self-collision.
+    q = np.array([0.0, -1.7, 0.0, -3.0, 0.0, 0.0, 0.0])
+    self_contacts = [c for c in checker.distances(q, activation=0.0)
+                     if c.a.startswith("link:") and c.b.startswith("link:")]
+    assert self_contacts
+
+
+def test_support_and_ignore(planar):
+    world, checker = planar
+    assert checker.support == frozenset({"floor"})
+    q = np.array([0.2, 0.0])
+    names = {c.b for c in checker.distances(q, activation=0.2)}
+    assert "body:wall" in names and "body:floor" not in names
+    names = {c.b for c in checker.distances(q, activation=0.2, ignore=frozenset({"wall"}))}
+    assert "body:wall" not in names
+
+
+def test_body_poses_override_start_poses(planar):
+    world, checker = planar
+    q = np.array([-0.2, -0.15])
+    far = transforms.pose(None, (0.9, 0.9, 0.025))
+    assert any(c.b == "body:a" for c in checker.distances(q, activation=0.2))
+    assert not any(c.b == "body:a"
+                   for c in checker.distances(q, {"a": far}, activation=0.2))
+
+
+def test_activation_prunes_far_pairs(planar):
+    world, checker = planar
+    q = np.array([0.0, 0.0])
+    for contact in checker.distances(q, activation=0.1):
+        assert contact.distance <= 0.1
+    assert checker.min_distance(q) == pytest.approx(0.225, abs=1e-4)
+
+
+def test_body_distance_and_planar_pose_gradient(planar):
+    world, checker = planar
+    rng = np.random.default_rng(5)
+    for _ in range(20):
+        xa, ya, yawa = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-3, 3)
+        xb, yb, yawb = rng.uniform(-0.3, 0.3), rng.uniform(-0.3, 0.3), rng.uniform(-3, 3)
+
+        def pose(x, y, yaw):
+            return transforms.pose(transforms.rot_z(yaw), (x, y, 0.025))
+
+        c = checker.body_distance("a", pose(xa, ya, yawa), "post", pose(xb, yb, yawb))
+        h = 1e-5
+        params = np.array([xa, ya, yawa, xb, yb, yawb])
+        numeric = np.zeros(6)
+        for i in range(6):
+            d = np.zeros(6)
+            d[i] = h
+            p, m = params + d, params - d
+            plus = checker.body_distance("a", pose(*p[:3]), "post", pose(*p[3:])).distance
+            minus = checker.body_distance("a", pose(*m[:3]), "post", pose(*m[3:])).distance
+            numeric[i] = (plus - minus) / (2 * h)
+        np.testing.assert_allclose(c.gradient, numeric, atol=5e-3)

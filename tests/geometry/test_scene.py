@@ -1,0 +1,60 @@
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tampcli.errors import SceneError
+from tampcli.geometry.scene import find_modes, find_scene, load_modes, load_scene
+from tampcli.pddl import parser
+
+DATA = Path(__file__).parent / "data"
+
+
+@pytest.fixture(scope="module")
+def domain():
+    return parser.parse_domain_file(str(DATA / "domain.pddl"))
+
+
+@pytest.fixture(scope="module")
+def problem():
+    return parser.parse_problem_file(str(DATA / "p01.pddl"))
+
+
+def test_find_scene_and_modes():
+    assert find_scene(DATA / "p01.pddl") == DATA / "p01.scene.toml"
+    assert find_modes(DATA / "domain.pddl") == DATA / "modes.toml"
+    assert find_scene(DATA / "nothing.pddl") is None
+
+
+def test_load_scene(domain, problem):
+    modes = load_modes(DATA / "modes.toml", domain)
+    scene = load_scene(DATA / "p01.scene.toml", domain, problem, modes=modes)
+    assert scene.robot.model == "panda"
+    assert [b.name for b in scene.bodies] == ["table", "a", "b", "wall"]
+    a = scene.body("a")
+    assert not a.fixed and not a.obstacle and a.color[0] > 0.5
+    np.testing.assert_allclose(a.matrix[:3, 3], [0.45, -0.2, 0.025])
+    assert a.matrix[1, 0] == pytest.approx(np.sin(0.3))
+    assert scene.body("wall").obstacle and scene.body("wall").fixed
+    assert scene.body("b").color == (0.2, 0.4, 0.9, 1.0)
+    assert scene.region("goal").on == "table"
+    assert scene.camera.eye == (1.3, 0.9, 0.9)
+    assert scene.movable_names == ("a", "b")
+
+
+def test_load_modes(domain):
+    modes = load_modes(DATA / "modes.toml", domain)
+    assert modes["pick"].kind == "grasp" and modes["pick"].object == "?b"
+    assert modes["place"].bind(("a", "goal")) == {"object": "a", "on": "goal", "to": None}
+    assert modes["wait"].kind == "none"
+    assert set(modes) == {"pick", "place", "wait"}
+    assert modes.missing == ()
+
+
+def test_scene_errors_are_scene_errors(tmp_path, domain, problem):
+    bad = tmp_path / "bad.scene.toml"
+    bad.write_text("[robot]\nmodel = 'panda'\n[[objects]]\nname = 'a'\nshape = 'box'\n"
+                   "size = [0.05, -0.05, 0.05]\npose = [0, 0, 0]\n")
+    with pytest.raises(SceneError) as info:
+        load_scene(bad, domain, problem)
+    assert info.value.line == 6 and info.value.key == "objects.size"

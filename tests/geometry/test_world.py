@@ -1,0 +1,189 @@
+import numpy as np
+import pytest
+
+from tampcli.geometry import transforms
+from tampcli.geometry.world import World
+
+from .worlds import panda_scene, planar_scene
+
+
+@pytest.fixture(scope="module")
+def panda():
+    with World(panda_scene()) as world:
+        yield world
+
+
+@pytest.fixture(scope="module")
+def planar():
+    with World(planar_scene()) as world:
+        yield world
+
+
+def _random_qs(world, count, seed=0):
+    rng = np.random.default_rng(seed)
+    return [rng.uniform(world.lower, world.upper) for _ in range(count)]
+
+
+def _pybullet_link_frames(world):
+    pb, c = world.pb, world.client
+    out = {}
+    for link in world.chain.links[1:]:
+        s = pb.getLinkState(world.robot_id, link.pb_index, computeForwardKinematics=True,
+                            physicsClientId=c)
+        out[link.name] = transforms.pose(transforms.quat_to_matrix(s[5]), s[4])
+    return out
+
+
+@pytest.mark.parametrize("name", ["panda", "planar"])
+def test_fk_matches_pybullet(name, request):
+    world = request.getfixturevalue(name)
+    try:
+        for q in _random_qs(world, 25):
+            world.set_state(q)
+            expected = _pybullet_link_frames(world)
+            mine = world.fk(q)
+            for link, frame in expected.items():
+                np.testing.assert_allclose(mine[link], frame, atol=2e-6, err_msg=link)
+    finally:
+        world.set_state(world.start)
+
+
+def test_panda_names_limits_and_tool(panda):
+    assert panda.joint_names == tuple(f"panda_joint{i}" for i in range(1, 8))
+    assert panda.tool_link == "panda_grasptarget"
+    assert panda.lower.shape == panda.upper.shape == panda.start.shape == (7,)
+    assert np.all(panda.lower < panda.upper)
+    assert np.all((panda.lower <= panda.start) & (panda.start <= panda.upper))
+    # The grasp target sits 0.105 m along the hand's z axis from the hand frame.
+    frames = panda.fk(panda.start)
+    hand, tool = frames["panda_hand"], frames["panda_grasptarget"]
+    np.testing.assert_allclose(tool[:3, 3], hand[:3, 3] + 0.105 * hand[:3, 2], atol=1e-9)
+    # In the ready pose the tool points down.
+    assert panda.tool_pose(panda.start)[2, 2] < -0.99
+
+
+def test_planar_joints_hold_world_coordinates(planar):
+    assert planar.joint_names == ("x", "y")
+    pose = planar.tool_pose([0.2, -0.4])
+    np.testing.assert_allclose(pose[:3, 3], [0.2, -0.4, 0.025], atol=1e-9)
+    np.testing.assert_allclose(planar.lower, [-1.0, -1.0], atol=1e-3)
+    np.testing.assert_allclose(planar.upper, [1.0, 1.0], atol=1e-3)
+
+
+@pytest.mark.parametrize("name", ["panda", "planar"])
+def test_point_jacobian_matches_finite_differences(name, request):
+    world = request.getfixturevalue(name)
+    rng = np.random.default_rng(3)
+    h = 1e-6
+    for q in _random_qs(world, 10, seed=4):
+        for link in world.link_names[1:]:
+            frame = world.fk(q)[link]
+            local = rng.normal(size=3) * 0.1
+            point = frame[:3, :3] @ local + frame[:3, 3]
+            jac = world.point_jacobian(q, link, point)
+            numeric = np.zeros_like(jac)
+            for i in range(world.n):
+                dq = np.zeros(world.n)
+                dq[i] = h
+                fp, fm = world.fk(q + dq)[link], world.fk(q - dq)[link]
+                numeric[:, i] = ((fp[:3, :3] @ local + fp[:3, 3])
+                                 - (fm[:3, :3] @ local + fm[:3, 3])) / (2 * h)
+            np.testing.assert_allclose(jac, numeric, atol=1e-7, err_msg=link)
+
+
+def test_tool_jacobian_matches_finite_differences(panda):
+    h = 1e-6
+    for q in _random_qs(panda, 5, seed=5):
+        jac = panda.tool_jacobian(q)
+        base = panda.tool_pose(q)
+        for i in range(panda.n):
+            dq = np.zeros(panda.n)
+            dq[i] = h
+            plus, minus = panda.tool_pose(q + dq), panda.tool_pose(q - dq)
+            np.testing.assert_allclose(jac[:3, i], (plus[:3, 3] - minus[:3, 3]) / (2 * h),
+                                       atol=1e-7)
+            # Angular velocity: the rotation vector of R(q+h) R(q)^T per h.
+            omega = transforms.rotation_log(plus[:3, :3] @ base[:3, :3].T) / h
+            np.testing.assert_allclose(jac[3:, i], omega, atol=1e-5)
+
+
+def test_point_jacobian_matches_pybullet(panda):
+    pb, c = panda.pb, panda.client
+    try:
+        for q in _random_qs(panda, 5, seed=6):
+            panda.set_state(q)
+            link = panda.chain.links[panda.chain.index["panda_hand"]]
+            local = [0.01, 0.02, 0.03]
+            # PyBullet wants all movable joints (fingers too) and a URDF-link-frame position.
+            full = list(q) + [0.04, 0.04]
+            lin, _ = pb.calculateJacobian(panda.robot_id, link.pb_index, local, full,
+                                          [0.0] * 9, [0.0] * 9, physicsClientId=c)
+            frame = panda.fk(q)["panda_hand"]
+            point = frame[:3, :3] @ local + frame[:3, 3]
+            np.testing.assert_allclose(panda.point_jacobian(q, "panda_hand", point),
+                                       np.array(lin)[:, :7], atol=1e-5)
+    finally:
+        panda.set_state(panda.start)
+
+
+def test_ik_reaches_reachable_targets(panda):
+    for q in _random_qs(panda, 6, seed=7):
+        target = panda.tool_pose(q)
+        solution, residual = panda.ik(target, seed=panda.start)
+        assert residual < 1e-4
+        np.testing.assert_allclose(panda.tool_pose(solution), target, atol=1e-3)
+        assert np.all(solution >= panda.lower - 1e-12) and np.all(solution <= panda.upper + 1e-12)
+
+
+def test_ik_reports_unreachable_target(panda):
+    target = transforms.pose(None, (2.0, 0.0, 0.5))
+    _, residual = panda.ik(target, position_only=True, restarts=2)
+    assert residual > 0.5
+
+
+def test_ik_position_only(panda):
+    target = transforms.pose(None, (0.4, 0.2, 0.3))
+    q, residual = panda.ik(target, position_only=True)
+    assert residual < 1e-4
+    np.testing.assert_allclose(panda.tool_pose(q)[:3, 3], [0.4, 0.2, 0.3], atol=1e-4)
+
+
+def test_queries_leave_simulator_unchanged(panda):
+    pb, c = panda.pb, panda.client
+    before = [pb.getJointState(panda.robot_id, j, physicsClientId=c)[0]
+              for j in range(pb.getNumJoints(panda.robot_id, physicsClientId=c))]
+    q = panda.upper - 0.1
+    panda.fk(q)
+    panda.point_jacobian(q, "panda_link5", [0.1, 0.1, 0.5])
+    panda.ik(panda.tool_pose(q))
+    after = [pb.getJointState(panda.robot_id, j, physicsClientId=c)[0]
+             for j in range(pb.getNumJoints(panda.robot_id, physicsClientId=c))]
+    assert before == after
+
+
+def test_body_pose_and_names(panda):
+    assert "a" in panda.movable_names and "table" not in panda.movable_names
+    assert set(panda.body_names) == {"pedestal", "table", "wall", "post", "ball", "a"}
+    np.testing.assert_allclose(panda.body_pose("a")[:3, 3], [0.45, -0.1, 0.025])
+
+
+def test_set_state_and_camera_image(planar):
+    try:
+        image = planar.camera_image(64, 48, eye=(0.0, -1.5, 1.5), target=(0.0, 0.0, 0.0))
+        assert image.shape == (48, 64, 3) and image.dtype == np.uint8
+        moved = transforms.pose(None, (0.0, 0.0, 0.025))
+        planar.set_state([0.5, 0.5], {"a": moved})
+        lo, hi = planar.bounds()
+        np.testing.assert_allclose(lo[:2], [-1.0, -1.0], atol=0.01)
+        image2 = planar.camera_image(64, 48, eye=(0.0, -1.5, 1.5), target=(0.0, 0.0, 0.0))
+        assert np.abs(image2.astype(int) - image.astype(int)).sum() > 0
+    finally:
+        planar.set_state(planar.start, {"a": planar.body_pose("a")})
+
+
+def test_close_releases_client():
+    world = World(planar_scene())
+    client = world.client
+    world.close()
+    assert not world.pb.isConnected(physicsClientId=client)
+    world.close()

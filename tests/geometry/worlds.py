@@ -1,0 +1,33 @@
+"""Small scenes built in code for the geometry tests."""
+
+from tampcli.geometry.scene import Body, RobotSpec, Scene
+
+IDENTITY = (0.0, 0.0, 0.0, 1.0)
+
+
+def box(name, size, xyz, fixed=True, quat=IDENTITY):
+    return Body(name, "box", tuple(size), tuple(xyz) + tuple(quat), fixed)
+
+
+def panda_scene() -> Scene:
+    """A Panda on a pedestal, a table, a wall, a cylinder, a sphere and a cube to pick."""
+    bodies = (
+        box("pedestal", (0.3, 0.3, 0.2), (0.0, 0.0, -0.1)),
+        box("table", (0.8, 1.2, 0.04), (0.55, 0.0, -0.02)),
+        box("wall", (0.05, 0.8, 0.6), (0.75, 0.0, 0.3)),
+        Body("post", "cylinder", (0.05, 0.3), (0.4, 0.35, 0.15) + IDENTITY, True),
+        Body("ball", "sphere", (0.08,), (0.3, -0.35, 0.45) + IDENTITY, True),
+        box("a", (0.05, 0.05, 0.05), (0.45, -0.1, 0.025), fixed=False,
+            quat=(0.0, 0.0, 0.3826834, 0.9238795)),
+    )
+    return Scene(None, RobotSpec("panda"), bodies)
+
+
+def planar_scene() -> Scene:
+    bodies = (
+        box("floor", (2.0, 2.0, 0.02), (0.0, 0.0, -0.01)),
+        box("wall", (0.05, 1.0, 0.2), (0.3, 0.0, 0.1)),
+        Body("post", "cylinder", (0.06, 0.2), (-0.3, 0.3, 0.1) + IDENTITY, True),
+        box("a", (0.06, 0.06, 0.05), (-0.2, -0.3, 0.025), fixed=False),
+    )
+    return Scene(None, RobotSpec("planar", base=(0.0, 0.0, 0.025) + IDENTITY), bodies)
