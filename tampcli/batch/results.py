@@ -1,0 +1,155 @@
+"""Result (one problem's outcome) and the results file that survives SIGKILL.
+
+Each Result is one JSON line, written with a single `os.write` on an
+O_APPEND descriptor and then fsynced, so a line is either wholly in the file
+or, if the batch dies inside that write, a trailing fragment without its
+newline. Opening the file for `--resume` truncates such a fragment; every
+other line must be a whole result, or the file is refused as not ours.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+from dataclasses import asdict, dataclass, field
+from typing import Any
+
+from tampcli.errors import InputError, UsageError, source_line_at
+
+STATUSES = ("solved", "unsolvable", "limit", "timeout", "error", "crashed")
+
+
+@dataclass(frozen=True)
+class Result:
+    problem: str
+    domain: str | None
+    status: str  # one of STATUSES
+    cost: float | None = None
+    plan_length: int | None = None
+    wall_s: float = 0.0
+    peak_rss_mb: float | None = None
+    stats: dict[str, Any] = field(default_factory=dict)
+    error: str | None = None
+    exit_code: int | None = None  # of the child; None when no child ran or it was killed
+
+    def __post_init__(self):
+        if self.status not in STATUSES:
+            raise ValueError(f"unknown status {self.status!r}")
+
+    def to_json(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+class ResultsFile:
+    """The append-only results file of one batch; use as a context manager."""
+
+    def __init__(self, path: str, resume: bool):
+        self.path = path
+        self.records: list[dict[str, Any]] = []
+        self.repaired_bytes = 0
+        if os.path.isdir(path):
+            raise UsageError("is a folder; --out wants a file", path=path)
+        if os.path.exists(path):
+            if not resume and os.path.getsize(path) > 0:
+                raise UsageError("results file exists: pass --resume to continue it, or remove "
+                                 "it to start over", path=path, key="--out")
+            if resume:
+                self.repaired_bytes = _truncate_torn_tail(path)
+                self.records = read_results(path)
+        parent = os.path.dirname(os.path.abspath(path))
+        os.makedirs(parent, exist_ok=True)
+        try:
+            self._fd = os.open(path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
+        except OSError as err:
+            raise UsageError(f"cannot write: {err.strerror}", path=path, key="--out") from None
+
+    def done(self) -> set[str]:
+        """Absolute paths of the problems already recorded."""
+        return {os.path.abspath(r["problem"]) for r in self.records}
+
+    def append(self, result: Result) -> None:
+        record = _strict(result.to_json())
+        line = (json.dumps(record, default=_jsonable, allow_nan=False) + "\n").encode()
+        written = os.write(self._fd, line)
+        if written != len(line):
+            # A short write on a regular file means the disk is full: the
+            # fragment is cut away by the next --resume.
+            raise OSError(f"{self.path}: short write ({written} of {len(line)} bytes)")
+        os.fsync(self._fd)
+        self.records.append(record)
+
+    def close(self) -> None:
+        if self._fd >= 0:
+            os.close(self._fd)
+            self._fd = -1
+
+    def __enter__(self) -> ResultsFile:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+
+def read_results(path: str) -> list[dict[str, Any]]:
+    """Every line of a results file; a line that is not a result is bad input."""
+    records = []
+    with open(path, encoding="utf-8", errors="replace") as f:
+        text = f.read()
+    for number, line in enumerate(text.splitlines(), start=1):
+        if not line.strip():
+            continue
+        try:
+            record = json.loads(line)
+        except json.JSONDecodeError as err:
+            raise InputError(f"not a results line: {err.msg}", path, number, err.colno,
+                             source_line_at(text, number)) from None
+        if not isinstance(record, dict) or not isinstance(record.get("problem"), str):
+            raise InputError("not a results line: expected an object with a \"problem\"",
+                             path, number, 1, source_line_at(text, number))
+        records.append(record)
+    return records
+
+
+def _truncate_torn_tail(path: str) -> int:
+    """Cut a trailing fragment that has no newline; return how many bytes."""
+    with open(path, "rb+") as f:
+        size = f.seek(0, os.SEEK_END)
+        if size == 0:
+            return 0
+        keep = size
+        chunk = 4096
+        while keep > 0:
+            start = max(0, keep - chunk)
+            f.seek(start)
+            block = f.read(keep - start)
+            newline = block.rfind(b"\n")
+            if newline >= 0:
+                keep = start + newline + 1
+                break
+            keep = start
+        if keep == size:
+            return 0
+        f.truncate(keep)
+        f.flush()
+        os.fsync(f.fileno())
+        return size - keep
+
+
+def _strict(value: Any) -> Any:
+    """Strict JSON: a non-finite float (an infinite bound, say) becomes null."""
+    if isinstance(value, float):
+        return value if math.isfinite(value) else None
+    if isinstance(value, dict):
+        return {str(k): _strict(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_strict(v) for v in value]
+    return value
+
+
+def _jsonable(value: Any) -> Any:
+    if hasattr(value, "tolist"):
+        return value.tolist()
+    if isinstance(value, (set, frozenset, tuple)):
+        return list(value)
+    return str(value)

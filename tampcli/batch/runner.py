@@ -1,0 +1,205 @@
+"""One Job -> one child process -> one Result, whatever the child does.
+
+The child runs `python -m tampcli.batch.child ... -- plan|solve DOMAIN
+PROBLEM --json --time-limit S` in a session of its own, so that at the limit
+(S plus a grace period) the whole process group — the planner and anything
+it started — is killed at once. The child is waited for with `waitid(...,
+WNOWAIT)` first: while it is an unreaped zombie its process-group id cannot
+be reused, so killing stragglers of the group is safe; `wait4` then reaps it
+and gives its own peak RSS.
+"""
+
+from __future__ import annotations
+
+import os
+import select
+import signal
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from tampcli.batch.discover import Job
+from tampcli.batch.outcome import classify
+from tampcli.batch.results import Result
+from tampcli.errors import UsageError
+
+_POLL_S = 0.05
+
+
+@dataclass(frozen=True)
+class RunOptions:
+    """How each problem is run.
+
+    time_limit: seconds given to the child (`--time-limit`); None = no limit.
+    grace: seconds past time_limit before the child's group is killed.
+    memory_mb: cap on the child's address space (RLIMIT_AS), MB; None = none.
+    symbolic: run `plan` instead of `solve`.
+    video_dir: with solve, `--video DIR/<domain>-<problem>.mp4`.
+    """
+
+    time_limit: float | None = None
+    grace: float = 5.0
+    memory_mb: int | None = None
+    symbolic: bool = False
+    video_dir: str | None = None
+
+    def __post_init__(self):
+        if self.time_limit is not None and not self.time_limit > 0:
+            raise UsageError(f"must be positive, got {self.time_limit}", key="--time-limit")
+        if not self.grace >= 0:
+            raise UsageError(f"must be zero or positive, got {self.grace}", key="--grace")
+        if self.memory_mb is not None and self.memory_mb <= 0:
+            raise UsageError(f"must be positive, got {self.memory_mb}", key="--memory-limit")
+        if self.video_dir is not None and self.symbolic:
+            raise UsageError("videos need `solve`: drop --symbolic or --video-dir",
+                             key="--video-dir")
+
+    @property
+    def kill_after(self) -> float | None:
+        return None if self.time_limit is None else self.time_limit + self.grace
+
+
+class LiveGroups:
+    """Process groups of running children, so an interrupted batch can kill them."""
+
+    def __init__(self):
+        self._lock = threading.Lock()
+        self._groups: set[int] = set()
+        self._stopping = False
+
+    def add(self, pgid: int) -> None:
+        with self._lock:
+            if self._stopping:  # started while the batch was being interrupted
+                _kill_group(pgid)
+            self._groups.add(pgid)
+
+    def discard(self, pgid: int) -> None:
+        with self._lock:
+            self._groups.discard(pgid)
+
+    def kill_all(self) -> None:
+        with self._lock:
+            self._stopping = True
+            for pgid in self._groups:
+                _kill_group(pgid)
+
+
+def child_command(job: Job, options: RunOptions) -> list[str]:
+    command = "plan" if options.symbolic else "solve"
+    head = [sys.executable, "-m", "tampcli.batch.child", "--parent", str(os.getpid())]
+    if options.memory_mb is not None:
+        head += ["--memory-mb", str(options.memory_mb)]
+    args = [command, job.domain or "", job.problem, "--json"]
+    if options.time_limit is not None:
+        args += ["--time-limit", f"{options.time_limit:g}"]
+    if options.video_dir is not None:
+        args += ["--video", str(video_path(job, options.video_dir))]
+    return head + ["--"] + args
+
+
+def video_path(job: Job, video_dir: str) -> Path:
+    return Path(video_dir) / f"{job.label}-{Path(job.problem).stem}.mp4"
+
+
+def run_job(job: Job, options: RunOptions, live: LiveGroups | None = None) -> Result:
+    """Run one problem in its own process; never raises for what the child does."""
+    if job.domain is None:
+        looked = Path(job.problem).parent
+        return Result(job.problem, None, "error",
+                      error=f"{job.problem}: no domain file found (looked for pNN-domain.pddl, "
+                            f"domain_pNN.pddl, domain-pNN.pddl and domain.pddl in {looked} "
+                            f"and its parent, and ../../domains/{looked.name}/domain.pddl)")
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1",
+               MKL_NUM_THREADS="1", NO_COLOR="1")
+    with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
+        start = time.monotonic()
+        try:
+            proc = subprocess.Popen(child_command(job, options), stdin=subprocess.DEVNULL,
+                                    stdout=out, stderr=err, env=env, start_new_session=True)
+        except OSError as exc:
+            return Result(job.problem, job.domain, "crashed",
+                          error=f"cannot start the child: {exc}")
+        if live is not None:
+            live.add(proc.pid)
+        try:
+            timed_out = _wait_exit(proc.pid, start, options.kill_after)
+            # Whatever the child left running in its group goes with it.
+            _kill_group(proc.pid)
+        finally:
+            if live is not None:
+                live.discard(proc.pid)
+        _, status, usage = os.wait4(proc.pid, 0)
+        wall = time.monotonic() - start
+        proc.returncode = os.waitstatus_to_exitcode(status)
+        stdout, stderr = _read(out), _read(err)
+    outcome = classify(proc.returncode, timed_out, stdout, stderr, options.time_limit,
+                       options.memory_mb)
+    return Result(
+        problem=job.problem,
+        domain=job.domain,
+        status=outcome.status,
+        cost=outcome.cost,
+        plan_length=outcome.plan_length,
+        wall_s=round(wall, 3),
+        peak_rss_mb=round(_maxrss_mb(usage.ru_maxrss), 1),
+        stats=outcome.stats or {},
+        error=outcome.error,
+        exit_code=None if timed_out or proc.returncode < 0 else proc.returncode,
+    )
+
+
+def _wait_exit(pid: int, start: float, kill_after: float | None) -> bool:
+    """Block until `pid` has exited (left unreaped); kill its group at the
+    deadline. True when it had to be killed."""
+    deadline = None if kill_after is None else start + kill_after
+    pidfd = _pidfd(pid)
+    try:
+        while not _exited(pid):
+            remaining = None if deadline is None else deadline - time.monotonic()
+            if remaining is not None and remaining <= 0:
+                _kill_group(pid)
+                os.waitid(os.P_PID, pid, os.WEXITED | os.WNOWAIT)
+                return True
+            if pidfd is not None:
+                select.select([pidfd], [], [], remaining)
+            else:
+                time.sleep(_POLL_S if remaining is None else min(_POLL_S, remaining))
+    finally:
+        if pidfd is not None:
+            os.close(pidfd)
+    return False
+
+
+def _exited(pid: int) -> bool:
+    return os.waitid(os.P_PID, pid, os.WEXITED | os.WNOWAIT | os.WNOHANG) is not None
+
+
+def _pidfd(pid: int) -> int | None:
+    """A descriptor that becomes readable when `pid` exits (Linux >= 5.3)."""
+    if not hasattr(os, "pidfd_open"):
+        return None
+    try:
+        return os.pidfd_open(pid)
+    except OSError:
+        return None
+
+
+def _kill_group(pgid: int) -> None:
+    try:
+        os.killpg(pgid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+
+
+def _read(f) -> str:
+    f.seek(0)
+    return f.read().decode("utf-8", errors="replace")
+
+
+def _maxrss_mb(maxrss: int) -> float:
+    # Linux reports kilobytes, macOS bytes.
+    return maxrss / (1024 * 1024) if sys.platform == "darwin" else maxrss / 1024
