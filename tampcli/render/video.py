@@ -1,0 +1,106 @@
+"""`render_solution`: a solution.json (or Solution) -> mp4 / gif, keyframe strip,
+and optionally a physics check. `solve --video` and `tampcli render` call it."""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+from tampcli.render.camera import choose_camera
+from tampcli.render.encode import keyframe_strip, open_writer, save_image
+from tampcli.render.frames import FrameJob, frame_renderer, render_frames
+from tampcli.render.inputs import check_against_world, load_inputs, mode_kind_of
+from tampcli.render.options import RenderOptions, check_writable, image_format, video_format
+from tampcli.render.progress import progress
+from tampcli.render.replay import Replay
+from tampcli.render.scenery import visible_points
+from tampcli.solution import Solution
+
+
+def render_solution(source: Solution | str | Path, out_path: str | Path | None,
+                    options: RenderOptions | None = None, ui=None,
+                    keyframes: str | Path | None = None) -> dict:
+    """Replay `source` into `out_path` (.mp4 or .gif) and/or a keyframe strip.
+
+    Returns what was made: `path`, `frames`, `seconds` (video length),
+    `width`, `height`, `fps`, `render_seconds` (wall time), and `keyframes`,
+    `panels`, `physics` when asked. Bad paths and a solution that does not fit
+    its scene raise InputError before any frame is rendered.
+    """
+    options = options or RenderOptions()
+    kind = video_format(out_path, options.width, options.height) if out_path else None
+    if keyframes is not None:
+        image_format(keyframes)
+    for path, key in ((out_path, "--video"), (keyframes, "--keyframes")):
+        if path is not None:
+            check_writable(path, key)
+    started = time.perf_counter()
+    inputs = load_inputs(source)
+    replay, camera = _plan(inputs, options)
+    job = FrameJob(inputs.scene, camera, options.width, options.height, inputs.problem_name,
+                   options.caption)
+    report: dict = {"path": str(out_path) if out_path else None, "frames": 0,
+                    "seconds": round(float(replay.duration), 3), "width": options.width,
+                    "height": options.height, "fps": options.fps,
+                    "camera": {"eye": camera.eye, "target": camera.target, "fov": camera.fov}}
+    if kind is not None:
+        states = replay.states(options.fps)
+        report["frames"] = _write_video(kind, out_path, job, states, options, ui)
+        report["workers"] = min(options.worker_count, len(states))
+    if keyframes is not None:
+        report["keyframes"], report["panels"] = str(keyframes), _write_strip(
+            keyframes, job, replay)
+    if options.physics:
+        from tampcli.render.physics import replay_physics
+
+        report["physics"] = replay_physics(inputs, mode_kind_of(inputs.modes), options.speed)
+    report["render_seconds"] = round(time.perf_counter() - started, 3)
+    return report
+
+
+def _plan(inputs, options: RenderOptions):
+    """Check the solution against a World, then time it and place the camera."""
+    from tampcli.geometry.world import World
+
+    with World(inputs.scene) as world:
+        check_against_world(inputs, world)
+        replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind_of(inputs.modes),
+                        duration=options.duration, speed=options.speed, pause=options.pause)
+        points = None
+        if inputs.scene.camera is None:
+            points = visible_points(world, replay.states(min(options.fps, 4.0)))
+        camera = choose_camera(options.camera, inputs.scene.camera, points,
+                               options.width / options.height)
+    return replay, camera
+
+
+def _write_video(kind, out_path, job, states, options, ui) -> int:
+    writer = open_writer(kind, out_path, options.fps, options.width, options.height)
+    try:
+        with progress(ui, len(states), f"rendering {Path(out_path).name}") as advance:
+            for frame in render_frames(job, states, options.worker_count, advance):
+                writer.append(frame)
+        writer.close()
+    except BaseException:
+        _discard(writer, out_path)
+        raise
+    return writer.frames
+
+
+def _discard(writer, out_path) -> None:
+    """A half-written video is worse than none."""
+    try:
+        writer.close()
+    except Exception:  # noqa: BLE001 - already failing; the first error is the one to show
+        pass
+    Path(out_path).unlink(missing_ok=True)
+
+
+def _write_strip(path, job, replay) -> int:
+    states = replay.keyframes()
+    if not states:  # no geometric action: show where the robot starts and ends
+        states = [replay.state_at(0.0), replay.state_at(replay.duration)]
+    with frame_renderer(job) as renderer:
+        panels = [renderer.render(state) for state in states]
+    save_image(keyframe_strip(panels), path)
+    return len(panels)

@@ -1,0 +1,5 @@
+(define (problem render-panda-01)
+  (:domain render-panda)
+  (:objects a b - cube table goal - place)
+  (:init (on a table) (on b table) (handempty))
+  (:goal (on a goal)))

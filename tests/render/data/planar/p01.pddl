@@ -1,0 +1,5 @@
+(define (problem render-planar-01)
+  (:domain render-planar)
+  (:objects box - item start goal - region)
+  (:init (at box start))
+  (:goal (at box goal)))
