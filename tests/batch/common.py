@@ -1,6 +1,8 @@
 """Paths and small real inputs shared by the batch tests."""
 
+import os
 import shutil
+import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -27,3 +29,30 @@ def problem_set(folder: Path, names: list[str]) -> list[Path]:
             shutil.copy(GRIPPER_P01, path)
         paths.append(path)
     return paths
+
+
+def alive_with(marker: str) -> list[int]:
+    """Pids of live (not zombie) processes whose command line contains `marker`."""
+    pids = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            cmdline = Path(f"/proc/{entry}/cmdline").read_bytes().replace(b"\0", b" ").decode()
+            state = Path(f"/proc/{entry}/stat").read_text().rsplit(")", 1)[1].split()[0]
+        except OSError:
+            continue
+        if marker in cmdline and state != "Z":
+            pids.append(int(entry))
+    return pids
+
+
+def all_gone(marker: str, timeout: float = 10.0) -> bool:
+    """Whether every process matching `marker` is dead within `timeout` s
+    (a SIGKILLed process takes a moment to exit)."""
+    deadline = time.monotonic() + timeout
+    while alive_with(marker):
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+    return True

@@ -14,11 +14,11 @@ from pathlib import Path
 import pytest
 from rich.console import Console
 
-from tampcli.batch.child import CRASH_ENV, HANG_ENV
+from tampcli.batch.child import CRASH_ENV, HANG_ENV, HANG_MARKER
 from tampcli.cli import main
 from tampcli.cli.ui import UI
 
-from .common import GRIPPER_P01, IPC, ROOT, problem_set
+from .common import GRIPPER_P01, IPC, ROOT, alive_with, all_gone, problem_set
 
 
 def _lines(path: Path) -> list[dict]:
@@ -83,6 +83,8 @@ def test_sigkill_mid_batch_then_resume_records_each_problem_once(cli, tmp_path):
         time.sleep(0.05)
     os.kill(batch.pid, signal.SIGKILL)
     batch.wait()
+    # The child running at that moment dies with the batch (parent-death signal).
+    assert all_gone(f"tampcli.batch.child --parent {batch.pid}")
     done_before = len(_lines(out))
     assert 1 <= done_before < len(names)
     run = cli("batch", folder, "--symbolic", "--resume", "--out", out, "--json")
@@ -92,6 +94,24 @@ def test_sigkill_mid_batch_then_resume_records_each_problem_once(cli, tmp_path):
     assert _statuses(out) == {**dict.fromkeys(names, "solved"), "bad.pddl": "error"}
     summary = json.loads(run.out)
     assert summary["problems"] == len(names) and summary["skipped"] == done_before
+
+
+def test_ctrl_c_kills_running_children_and_their_groups(tmp_path):
+    folder = tmp_path / "hang"
+    [slow] = problem_set(folder, ["slow.pddl"])
+    env = dict(os.environ, **{HANG_ENV: str(slow)})
+    batch = subprocess.Popen([sys.executable, "-m", "tampcli", "batch", str(folder), "--symbolic",
+                              "--out", str(tmp_path / "r.jsonl"), "-q"], cwd=ROOT, env=env,
+                             stderr=subprocess.PIPE, text=True)
+    marker = f"{HANG_MARKER} {slow}"
+    deadline = time.monotonic() + 60
+    while not alive_with(marker) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert alive_with(marker), "the hung child never started its grandchild"
+    batch.send_signal(signal.SIGINT)
+    _, err = batch.communicate(timeout=30)
+    assert batch.returncode == 130 and "interrupted" in err
+    assert all_gone(marker) and all_gone(str(slow))
 
 
 def test_torn_last_line_is_cut_and_that_problem_runs_again(cli, tmp_path):

@@ -1,7 +1,7 @@
 """The runner against real child processes: solved, bad input, crash, hang, memory."""
 
-import os
 import time
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
@@ -11,7 +11,7 @@ from tampcli.batch.discover import Job, discover
 from tampcli.batch.runner import RunOptions, child_command, run_job
 from tampcli.errors import UsageError
 
-from .common import GRIPPER_DOMAIN, GRIPPER_P01, HARD, problem_set
+from .common import GRIPPER_DOMAIN, GRIPPER_P01, HARD, alive_with, all_gone, problem_set
 
 SYMBOLIC = RunOptions(symbolic=True, time_limit=60, grace=5)
 
@@ -19,22 +19,6 @@ SYMBOLIC = RunOptions(symbolic=True, time_limit=60, grace=5)
 def _job(problem: Path) -> Job:
     [job] = discover([str(problem)])
     return job
-
-
-def _alive_with(marker: str) -> list[int]:
-    """Pids of live (not zombie) processes whose command line contains `marker`."""
-    pids = []
-    for entry in os.listdir("/proc"):
-        if not entry.isdigit():
-            continue
-        try:
-            cmdline = Path(f"/proc/{entry}/cmdline").read_bytes().replace(b"\0", b" ").decode()
-            state = Path(f"/proc/{entry}/stat").read_text().rsplit(")", 1)[1].split()[0]
-        except OSError:
-            continue
-        if marker in cmdline and state != "Z":
-            pids.append(int(entry))
-    return pids
 
 
 def test_solved_problem_has_cost_length_rss_and_stats():
@@ -76,18 +60,23 @@ def test_crash_hook_aborts_the_child_for_real(tmp_path, monkeypatch):
 def test_hung_child_and_its_grandchild_are_killed_at_the_limit(tmp_path, monkeypatch):
     [slow] = problem_set(tmp_path, ["slow.pddl"])
     monkeypatch.setenv(HANG_ENV, str(slow))
-    start = time.monotonic()
-    result = run_job(_job(slow), RunOptions(symbolic=True, time_limit=1, grace=0.5))
-    elapsed = time.monotonic() - start
+    marker = f"{HANG_MARKER} {slow}"
+    with ThreadPoolExecutor(1) as pool:
+        start = time.monotonic()
+        future = pool.submit(run_job, _job(slow), RunOptions(symbolic=True, time_limit=1,
+                                                              grace=0.5))
+        grandchildren = []
+        while not grandchildren and not future.done():
+            grandchildren = alive_with(marker)
+            time.sleep(0.02)
+        result = future.result()
+        elapsed = time.monotonic() - start
+    assert grandchildren, "the hung child never started its grandchild"
     assert result.status == "timeout"
     assert "time limit (1 s)" in result.error
     assert 1.5 <= result.wall_s and elapsed < 10
-    # The grandchild the hung child started was in its process group.
-    deadline = time.monotonic() + 5
-    while _alive_with(str(slow)) and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert not [pid for pid in _alive_with(str(slow)) if HANG_MARKER in
-                Path(f"/proc/{pid}/cmdline").read_bytes().decode(errors="replace")]
+    # The grandchild was in the child's process group, so it died with it.
+    assert all_gone(marker)
 
 
 def test_hard_problem_past_its_limit_is_a_timeout():
