@@ -29,6 +29,7 @@ class Result:
     plan_length: int | None = None
     wall_s: float = 0.0
     peak_rss_mb: float | None = None
+    cpu_s: float | None = None  # user + system time of the child and what it waited for
     stats: dict[str, Any] = field(default_factory=dict)
     error: str | None = None
     exit_code: int | None = None  # of the child; None when no child ran or it was killed

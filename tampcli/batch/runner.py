@@ -146,6 +146,7 @@ def run_job(job: Job, options: RunOptions, live: LiveGroups | None = None) -> Re
         plan_length=outcome.plan_length,
         wall_s=round(wall, 3),
         peak_rss_mb=round(_maxrss_mb(usage.ru_maxrss), 1),
+        cpu_s=round(usage.ru_utime + usage.ru_stime, 3),
         stats=outcome.stats or {},
         error=outcome.error,
         exit_code=None if timed_out or proc.returncode < 0 else proc.returncode,

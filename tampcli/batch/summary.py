@@ -11,7 +11,7 @@ from tampcli.batch.discover import domain_label
 from tampcli.batch.results import STATUSES
 
 _CSV_FIELDS = ("problem", "domain", "domain_name", "status", "cost", "plan_length", "wall_s",
-               "peak_rss_mb", "exit_code", "error")
+               "cpu_s", "peak_rss_mb", "exit_code", "error")
 
 _SHORT = {"unsolvable": "unsolv", "crashed": "crash"}
 
@@ -38,6 +38,8 @@ def _totals(records: list[dict[str, Any]]) -> dict[str, Any]:
         "counts": counts,
         "median_wall_s": round(statistics.median(times), 3) if times else None,
         "total_wall_s": round(sum(times), 3),
+        "total_cpu_s": round(sum(r["cpu_s"] for r in records
+                                 if isinstance(r.get("cpu_s"), (int, float))), 3),
         "max_peak_rss_mb": max(rss) if rss else None,
     }
 
@@ -71,7 +73,7 @@ def write_csv(path: str, records: Iterable[dict[str, Any]]) -> None:
         for r in records:
             error = r.get("error")
             row = [r.get("problem"), r.get("domain"), _label(r), r.get("status"), r.get("cost"),
-                   r.get("plan_length"), r.get("wall_s"), r.get("peak_rss_mb"),
+                   r.get("plan_length"), r.get("wall_s"), r.get("cpu_s"), r.get("peak_rss_mb"),
                    r.get("exit_code"), error.splitlines()[0] if error else None]
             stats = r.get("stats") or {}
             row += [stats.get(k) for k in stat_keys]
