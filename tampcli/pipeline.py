@@ -132,6 +132,8 @@ def _solve_symbolic(domain_path, problem_path, task, options, timers, started) -
 
 def _solve_geometric(domain_path, problem_path, scene_file, modes_file, domain, problem, task,
                      options, timers, started, on_event) -> Solution:
+    from tampcli.errors import SceneError
+    from tampcli.geometry.collision import CollisionChecker
     from tampcli.geometry.scene import load_modes, load_scene
     from tampcli.geometry.world import World
     from tampcli.optimize.options import OptimizeOptions
@@ -140,26 +142,30 @@ def _solve_geometric(domain_path, problem_path, scene_file, modes_file, domain, 
     from tampcli.search.topk import TopK
 
     with timers.stage("scene"):
-        scene = load_scene(scene_file, domain, problem)
-        modes = load_modes(modes_file, domain) if modes_file else load_modes(None, domain)
+        if modes_file is None:
+            raise SceneError("the problem has a scene but the domain has no modes.toml beside "
+                             "it (or pass --modes)", domain_path)
+        modes = load_modes(modes_file, domain)
+        scene = load_scene(scene_file, domain, problem, modes=modes)
     deadline = time.perf_counter() + options.time_limit
     nlp_options = OptimizeOptions(waypoints=options.waypoints, seed=options.seed)
 
     with World(scene) as world:
+        checker = CollisionChecker(world)
         lowered: dict[tuple[str, ...], object] = {}
 
         def evaluate(ops, stage, warm):
             names = tuple(op.name for op in ops)
             if names not in lowered:
-                lowered[names] = lower(ops, scene, modes, world, nlp_options)
+                lowered[names] = lower(ops, scene, modes, world, nlp_options, domain=domain,
+                                       checker=checker)
             remaining = max(deadline - time.perf_counter(), 0.5)
             stage_options = nlp_options if remaining >= nlp_options.time_limit else \
                 _with_time_limit(nlp_options, remaining)
             return solve_stage(lowered[names], stage, warm=warm, options=stage_options)
 
         def is_geometric(op) -> bool:
-            mode = modes.get(op.action) if hasattr(modes, "get") else None
-            return mode is not None and getattr(mode, "kind", "none") != "none"
+            return modes.get_mode(op.action).kind != "none"
 
         topk = TopK(task, loopless=True, time_limit=options.time_limit)
         bnb_options = BnBOptions(max_skeletons=options.max_skeletons,
