@@ -359,12 +359,15 @@ def _atoms(formula):
 
 @pytest.mark.parametrize("problem", GEOMETRIC, ids=GEO_IDS)
 def test_loader_accepts_scene_and_modes(problem):
+    """The real loader: names, modes against the scene, start overlaps and joint limits."""
     from tampcli.geometry import scene as scene_module
 
     domain = parser.parse_domain_file(_domain_file(problem))
     prob = parser.parse_problem_file(problem)
-    loaded = scene_module.load_scene(_scene_file(problem), domain, prob, geometric=False)
+    modes = scene_module.load_modes(DOMAINS / problem.parent.name / "modes.toml", domain)
+    loaded = scene_module.load_scene(_scene_file(problem), domain, prob, modes=modes)
     assert {b.name for b in loaded.bodies} == set(_Scene.load(_scene_file(problem)).bodies)
+    assert {r.name for r in loaded.regions} == set(_Scene.load(_scene_file(problem)).regions)
 
 
 # ------------------------------------------------------------ slow sweep
