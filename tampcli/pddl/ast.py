@@ -8,7 +8,6 @@ printed and parsed again compares equal to the original.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Union
 
 
 @dataclass(frozen=True)
@@ -89,7 +88,7 @@ class Forall:
     span: Span = _span()
 
 
-Formula = Union[Atom, Not, And, Or, Imply, Exists, Forall]
+Formula = Atom | Not | And | Or | Imply | Exists | Forall
 TRUE = And(())
 
 
@@ -143,7 +142,7 @@ class WhenEffect:
     span: Span = _span()
 
 
-Effect = Union[Literal, Increase, AndEffect, ForallEffect, WhenEffect]
+Effect = Literal | Increase | AndEffect | ForallEffect | WhenEffect
 
 
 # ---------------------------------------------------------------- domain

@@ -19,6 +19,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedEOF, UnexpectedInput
 
 from tampcli.errors import InputError, PDDLSyntaxError, UnsupportedFeatureError, source_line_at
 from tampcli.pddl import ast
+from tampcli.pddl.lexer import PDDLLexer
 
 # Real PDDL nests a few dozen levels; the semantic passes recurse over
 # formulas, so deeper input is refused up front rather than crashing later.
@@ -35,7 +36,8 @@ _TOKEN_NAMES = {
     "MINUS": '"-"',
     "BINARY_COMP": "a comparison",
     "BINARY_OP": "an arithmetic operator",
-    "SEXPR_ATOM": "a token",
+    "ATOM": '"("',
+    "GROUND_ATOM": '"("',
     "$END": "end of file",
 }
 
@@ -43,7 +45,7 @@ _TOKEN_NAMES = {
 @functools.lru_cache(maxsize=1)
 def _lark() -> Lark:
     grammar = (Path(__file__).with_name("grammar.lark")).read_text()
-    return Lark(grammar, parser="lalr", propagate_positions=True, maybe_placeholders=False,
+    return Lark(grammar, parser="lalr", lexer=PDDLLexer, maybe_placeholders=False,
                 transformer=_Builder())
 
 
@@ -279,13 +281,6 @@ def _sections(sections, repeatable=()) -> dict[str, list]:
 class _Builder(Transformer):
     # ---- tokens and small pieces
 
-    def name(self, children):
-        tok = children[0]
-        return tok.update(value=tok.value.lower())
-
-    def VARIABLE(self, tok):
-        return tok.update(value=tok.value.lower())
-
     def primitive_type(self, children):
         return str(children[0])
 
@@ -382,9 +377,17 @@ class _Builder(Transformer):
 
     # ---- goal descriptions
 
-    @_paren
-    def atomic_formula(self, span, children):
-        return ast.Atom(str(children[0]), tuple(str(c) for c in children[1:]), span)
+    def ATOM(self, tok):
+        predicate, *args = tok.value[1:-1].split()
+        return ast.Atom(predicate, tuple(args),
+                        ast.Span(tok.line, tok.column, tok.end_line, tok.end_column))
+
+    GROUND_ATOM = ATOM
+
+    def atomic_formula(self, children):
+        lp, rp = children[0], children[-1]
+        return ast.Atom(children[1].value, tuple([c.value for c in children[2:-1]]),
+                        ast.Span(lp.line, lp.column, rp.end_line, rp.end_column))
 
     @_paren
     def gd_empty(self, span, children):
@@ -479,9 +482,7 @@ class _Builder(Transformer):
     def objects_def(self, span, children):
         return _Section(("objects", children[0], span))
 
-    @_paren
-    def ground_atom(self, span, children):
-        return ast.Atom(str(children[0]), tuple(str(c) for c in children[1:]), span)
+    ground_atom = atomic_formula
 
     @_paren
     def init_not(self, span, children):
