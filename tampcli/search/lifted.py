@@ -44,9 +44,10 @@ class World:
             (v.term.name, *v.term.args): v.value for v in problem.init_values}
         self.cost_function = (problem.metric.expression.name
                               if problem.metric is not None else "total-cost")
+        # as grounding does: a metric or :action-costs means general costs (an
+        # action with no increase then costs 0), otherwise every action costs 1
         self.unit_cost = not (problem.metric is not None
-                              and problem.metric.direction == "minimize"
-                              and _has_cost_effects(domain, self.cost_function))
+                              or ":action-costs" in domain.requirements)
         self.derived = frozenset(ax.name for ax in domain.axioms)
         self._strata = _stratify(domain.axioms, self.derived, domain.path)
 
@@ -206,19 +207,6 @@ def show(f, binding: Binding) -> str:
         inner = {k: v for k, v in binding.items() if k not in {p.name for p in f.params}}
         return f"({word} ({params}) {show(f.body, inner)})"
     return repr(f)
-
-
-def _has_cost_effects(domain: ast.Domain, function: str) -> bool:
-    def walk(e) -> bool:
-        if isinstance(e, ast.Increase):
-            return e.function.name == function
-        if isinstance(e, ast.AndEffect):
-            return any(walk(p) for p in e.parts)
-        if isinstance(e, (ast.WhenEffect, ast.ForallEffect)):
-            return walk(e.body)
-        return False
-
-    return any(walk(a.effect) for a in domain.actions)
 
 
 def _occurrences(f: ast.Formula, positive: bool, out: list) -> None:

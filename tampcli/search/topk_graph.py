@@ -1,0 +1,146 @@
+"""The part of the state space that can hold plans of cost <= B, grown as B grows.
+
+`BoundedGraph.explore(B)` expands, with an admissible heuristic h, every
+state reached with some g such that g + h(state) <= B, re-expanding a state
+whenever a cheaper g to it is found. Claim: afterwards every state on every
+plan of cost <= B is expanded. Induction along such a plan s0 .. sn: s0 is
+pushed with g = 0, and 0 + h(s0) <= h*(s0) <= B. If s_i was expanded with
+its final g(s_i) <= g_plan(s_i), s_{i+1} was offered g <= g_plan(s_{i+1}),
+and g + h(s_{i+1}) <= g_plan(s_{i+1}) + h*(s_{i+1}) <= B, so it was expanded
+too (with a g that can only have dropped since). Hence the subgraph of
+expanded states (`distances` works on it) contains every plan of cost <= B.
+
+Heuristic values are computed lazily: a child is queued with the parent's
+bound h(parent) - c(parent, child), itself admissible (h(parent) <= h*(parent)
+<= c + h*(child)), and evaluated only when it comes out of the queue.
+"""
+
+from __future__ import annotations
+
+import heapq
+from collections.abc import Callable
+
+from tampcli.task.task import Task
+
+INF = float("inf")
+
+
+class TimeUp(Exception):
+    """The time limit passed while exploring or enumerating."""
+
+
+class BoundedGraph:
+    def __init__(self, task: Task, heuristic: Callable[[frozenset], float],
+                 check_time: Callable[[], None]):
+        self.task, self.heuristic, self.check_time = task, heuristic, check_time
+        self.op_index = {id(op): i for i, op in enumerate(task.operators)}
+        self.costs = [op.cost for op in task.operators]
+        self.states: list[frozenset] = []
+        self.ids: dict[frozenset, int] = {}
+        self.g: list[float] = []
+        self.h: list[float | None] = []
+        # per state, (op index, successor id) of every applicable op once expanded
+        self.succ: list[tuple[tuple[int, int], ...] | None] = []
+        self.goal: list[bool] = []
+        self.open: list[tuple[float, float, int, int]] = []  # (key, g, seq, id)
+        self.seq = 0
+        self.expansions = 0
+        self.evaluations = 0
+        self.bound = -INF
+        self._id(task.init, 0.0, 0.0)
+
+    @property
+    def complete(self) -> bool:
+        """Nothing left to expand: the expanded part is all that is reachable."""
+        return not self.open
+
+    def _id(self, state: frozenset, g: float, h_bound: float) -> int:
+        sid = self.ids.get(state)
+        if sid is None:
+            sid = len(self.states)
+            self.ids[state] = sid
+            self.states.append(state)
+            self.g.append(g)
+            self.h.append(None)
+            self.succ.append(None)
+            self.goal.append(False)
+        elif g >= self.g[sid]:
+            return sid
+        self.g[sid] = g
+        known = self.h[sid]
+        self.seq += 1
+        heapq.heappush(self.open, (g + (known if known is not None else max(h_bound, 0.0)),
+                                   g, self.seq, sid))
+        return sid
+
+    def next_key(self) -> float:
+        """The smallest g + h bound among states still to expand (inf if none)."""
+        self._drop_stale()
+        return self.open[0][0] if self.open else INF
+
+    def _drop_stale(self) -> None:
+        while self.open and self.open[0][1] > self.g[self.open[0][3]]:
+            heapq.heappop(self.open)
+
+    def explore(self, bound: float) -> None:
+        """Expand every state whose g + h is <= bound (see the module docstring)."""
+        self.bound = max(self.bound, bound)
+        successors, index, costs = self.task.successors, self.op_index, self.costs
+        while True:
+            self._drop_stale()
+            if not self.open or self.open[0][0] > bound:
+                return
+            key, g, _, sid = heapq.heappop(self.open)
+            h = self.h[sid]
+            if h is None:
+                self.evaluations += 1
+                if self.evaluations % 64 == 0:
+                    self.check_time()
+                h = self.h[sid] = max(self.heuristic(self.states[sid]), key - g)
+                if g + h > key:  # the lazy bound was loose: queue with the true one
+                    if h < INF:
+                        self.seq += 1
+                        heapq.heappush(self.open, (g + h, g, self.seq, sid))
+                    continue
+            succ = self.succ[sid]
+            if succ is None:
+                self.expansions += 1
+                if self.expansions % 256 == 0:
+                    self.check_time()
+                state = self.states[sid]
+                self.goal[sid] = self.task.is_goal(state)
+                succ = self.succ[sid] = tuple(
+                    (index[id(op)], self._id(nxt, g + op.cost, h - op.cost))
+                    for op, nxt in successors(state))
+            else:
+                for op, nid in succ:
+                    self._id(self.states[nid], g + costs[op], h - costs[op])
+
+    def distances(self) -> list[float]:
+        """Cheapest cost to a goal, within the expanded part, for every known state."""
+        n = len(self.states)
+        preds: list[list[tuple[float, int]]] = [[] for _ in range(n)]
+        costs = self.costs
+        for sid, succ in enumerate(self.succ):
+            if succ is None:
+                continue
+            for op, nid in succ:
+                if self.succ[nid] is not None:
+                    preds[nid].append((costs[op], sid))
+        dist = [INF] * n
+        heap = []
+        for sid in range(n):
+            if self.succ[sid] is not None and self.goal[sid]:
+                dist[sid] = 0.0
+                heap.append((0.0, sid))
+        heapq.heapify(heap)
+        while heap:
+            d, sid = heapq.heappop(heap)
+            if d > dist[sid]:
+                continue
+            for c, pid in preds[sid]:
+                nd = d + c
+                if nd < dist[pid]:
+                    dist[pid] = nd
+                    heapq.heappush(heap, (nd, pid))
+        return dist

@@ -1,0 +1,254 @@
+"""Ranked plans: against exhaustive enumeration, against K* (kstar-planner), and forbid_prefix."""
+
+from __future__ import annotations
+
+import itertools
+from collections import Counter
+from pathlib import Path
+
+import pytest
+
+from tampcli.pddl import parser
+from tampcli.search.topk import Plan, TopK
+from tampcli.search.validate import validate_plan
+from tampcli.task.ground import ground
+
+ROOT = Path(__file__).resolve().parents[2]
+IPC = ROOT.parent / "shared" / "benchmarks" / "ipc"
+
+
+def task_of(domain: Path, problem: Path):
+    dom, prob = parser.parse_domain_file(domain), parser.parse_problem_file(problem)
+    return ground(dom, prob), dom, prob
+
+
+def all_plans(task, bound: float, loopless: bool,
+              max_len: int = 10**9) -> list[tuple[float, tuple[str, ...]]]:
+    """Every plan of cost <= bound (and length <= max_len), by depth-first enumeration."""
+    found = []
+
+    def dfs(state, g, names, seen):
+        if task.is_goal(state):
+            found.append((g, names))
+        if len(names) == max_len:
+            return
+        for op, nxt in task.successors(state):
+            if g + op.cost > bound or (loopless and nxt in seen):
+                continue
+            dfs(nxt, g + op.cost, names + (op.name,), seen | {nxt})
+
+    dfs(task.init, 0.0, (), frozenset([task.init]))
+    return sorted(found)
+
+
+def check_against_enumeration(task, k: int, loopless: bool, dom=None, prob=None,
+                              max_len: int = 10**9):
+    plans = list(itertools.islice(TopK(task, loopless=loopless), k))
+    costs = [p.cost for p in plans]
+    assert costs == sorted(costs)
+    bound = costs[-1]
+    reference = all_plans(task, bound, loopless, max_len)
+    # the k cheapest costs are the k smallest of all plans up to the k-th cost
+    assert costs == [c for c, _ in reference[:len(costs)]]
+    # below the k-th cost the plans themselves must be exactly the same set
+    below = {names for c, names in reference if c < bound}
+    got = [p.names for p in plans]
+    assert len(set(got)) == len(got), "a plan came out twice"
+    assert below <= set(got)
+    for p in plans:
+        assert sum(op.cost for op in p.operators) == p.cost
+        if loopless:
+            assert loopless_ok(task, p)
+        if dom is not None:
+            report = validate_plan(dom, prob, list(p.names))
+            assert report.valid and report.cost == p.cost, report.failure
+    return plans
+
+
+def loopless_ok(task, plan: Plan) -> bool:
+    state, seen = task.init, {task.init}
+    for op in plan.operators:
+        state = task.apply(state, op)
+        if state in seen:
+            return False
+        seen.add(state)
+    return True
+
+
+SMALL = [
+    pytest.param(ROOT / "domains/blocksworld/domain.pddl", ROOT / "problems/blocksworld/p01.pddl",
+                 60, id="sussman"),
+    pytest.param(ROOT / "domains/gripper/domain.pddl", ROOT / "problems/gripper/p01.pddl", 60,
+                 id="gripper-2"),
+    pytest.param(IPC / "blocks/domain.pddl", IPC / "blocks/probBLOCKS-4-0.pddl", 20,
+                 id="blocks-4-0"),
+]
+
+
+@pytest.mark.parametrize("loopless", [False, True], ids=["standard", "loopless"])
+@pytest.mark.parametrize("domain,problem,k", SMALL)
+def test_k_best_equal_exhaustive_enumeration(domain, problem, k, loopless):
+    task, dom, prob = task_of(domain, problem)
+    check_against_enumeration(task, k, loopless, dom, prob)
+
+
+# ---------------------------------------------------------------- a toy with costs and cycles
+
+TOY_DOMAIN = """
+(define (domain ring)
+  (:requirements :strips :typing :action-costs :conditional-effects)
+  (:types node)
+  (:predicates (at ?n - node) (edge ?a ?b - node) (free ?a ?b - node) (lit) (goal-node ?n - node))
+  (:functions (total-cost) - number (len ?a ?b - node) - number)
+  (:action go
+    :parameters (?a ?b - node)
+    :precondition (and (at ?a) (edge ?a ?b))
+    :effect (and (at ?b) (not (at ?a)) (increase (total-cost) (len ?a ?b))))
+  (:action hop
+    :parameters (?a ?b - node)
+    :precondition (and (at ?a) (free ?a ?b))
+    :effect (and (at ?b) (not (at ?a))))
+  (:action toggle
+    :parameters ()
+    :effect (and (when (lit) (not (lit))) (when (not (lit)) (lit))
+                 (increase (total-cost) 1))))
+"""
+
+TOY_PROBLEM = """
+(define (problem ring1) (:domain ring)
+  (:objects n0 n1 n2 n3 - node)
+  (:init (at n0) (edge n0 n1) (edge n1 n2) (edge n2 n3) (edge n0 n2) (edge n2 n0) (edge n1 n0)
+         (free n1 n2) (free n2 n1)
+         (= (len n0 n1) 1) (= (len n1 n2) 2) (= (len n2 n3) 1) (= (len n0 n2) 4)
+         (= (len n2 n0) 1) (= (len n1 n0) 3) (= (total-cost) 0))
+  (:goal (and (at n3) (lit)))
+  (:metric minimize (total-cost)))
+"""
+
+
+def make_toy(hops: bool):
+    text = TOY_PROBLEM if hops else TOY_PROBLEM.replace("(free n1 n2) (free n2 n1)", "")
+    dom, prob = parser.parse_domain(TOY_DOMAIN), parser.parse_problem(text)
+    return ground(dom, prob), dom, prob
+
+
+@pytest.fixture(scope="module")
+def toy():
+    return make_toy(hops=True)
+
+
+@pytest.mark.parametrize("hops", [False, True], ids=["costly-cycles", "zero-cost-cycle"])
+def test_toy_standard_mode_with_cycles_costs_and_conditional_effects(hops):
+    task, dom, prob = make_toy(hops)
+    # with the zero-cost hop cycle n1 <-> n2 there are infinitely many plans
+    # of each cost; plans up to 12 steps are enough to fill the first 40
+    check_against_enumeration(task, 40, False, dom, prob, max_len=12)
+
+
+@pytest.mark.parametrize("hops", [False, True], ids=["costly-cycles", "zero-cost-cycle"])
+def test_toy_loopless_gives_every_simple_plan(hops):
+    task, dom, prob = make_toy(hops)
+    plans = check_against_enumeration(task, 10_000, True, dom, prob)
+    assert len(plans) == len(all_plans(task, 1e9, True))
+
+
+def test_standard_mode_stays_lazy_on_a_zero_cost_cycle(toy):
+    task, _, _ = toy
+    plans = list(itertools.islice(TopK(task), 500))
+    assert len(plans) == 500
+    assert [p.cost for p in plans] == sorted(p.cost for p in plans)
+
+
+def test_loopless_mode_ends(toy):
+    topk = TopK(toy[0], loopless=True)
+    plans = list(topk)
+    assert plans and topk.stats["status"] == "exhausted"
+    assert len(plans) == len({p.names for p in plans})
+
+
+def test_unsolvable_task_yields_nothing():
+    dom = parser.parse_domain(TOY_DOMAIN)
+    prob = parser.parse_problem(TOY_PROBLEM.replace("(edge n2 n3)", ""))
+    topk = TopK(ground(dom, prob))
+    assert list(topk) == []
+    assert topk.stats["status"] == "exhausted"
+
+
+# ---------------------------------------------------------------- forbid_prefix
+
+@pytest.mark.parametrize("loopless", [False, True], ids=["standard", "loopless"])
+def test_forbid_prefix(loopless):
+    task, _, _ = task_of(IPC / "blocks/domain.pddl", IPC / "blocks/probBLOCKS-4-0.pddl")
+    free = list(itertools.islice(TopK(task, loopless=loopless), 120))
+    topk = TopK(task, loopless=loopless)
+    first = next(topk)
+    assert first.names == free[0].names
+    prefix = first.names[:2]
+    topk.forbid_prefix(prefix)
+    rest = list(itertools.islice(topk, 30))
+    assert all(p.names[:2] != prefix for p in rest)
+    # the others are still produced, in the same order as without the prefix
+    expected = [p for p in free[1:] if p.names[:2] != prefix]
+    assert len(expected) >= len(rest) == 30
+    assert [p.names for p in rest] == [p.names for p in expected[:30]]
+
+
+def test_forbidding_everything_and_nested_prefixes():
+    task, _, _ = task_of(ROOT / "domains/blocksworld/domain.pddl",
+                         ROOT / "problems/blocksworld/p01.pddl")
+    topk = TopK(task)
+    p = next(topk)
+    topk.forbid_prefix(p.names)  # the exact plan, then a prefix of it, then all
+    topk.forbid_prefix(p.names[:1])
+    assert all(q.names[:1] != p.names[:1] for q in itertools.islice(topk, 20))
+    topk.forbid_prefix(())
+    assert list(itertools.islice(topk, 5)) == []
+
+
+def test_time_limit_is_a_status():
+    task, _, _ = task_of(IPC / "logistics00/domain.pddl", IPC / "logistics00/probLOGISTICS-4-0.pddl")
+    topk = TopK(task, time_limit=0.05)
+    list(itertools.islice(topk, 1000))
+    assert topk.stats["status"] == "limit"
+
+
+def test_bad_time_limit():
+    from tampcli.errors import UsageError
+
+    task, _, _ = task_of(ROOT / "domains/blocksworld/domain.pddl",
+                         ROOT / "problems/blocksworld/p01.pddl")
+    with pytest.raises(UsageError):
+        TopK(task, time_limit=0)
+
+
+# ---------------------------------------------------------------- K* (kstar-planner)
+
+KSTAR = [
+    pytest.param("gripper", "prob01", 10),
+    pytest.param("gripper", "prob01", 100),
+    pytest.param("blocks", "probBLOCKS-4-0", 10),
+    pytest.param("blocks", "probBLOCKS-4-0", 100),
+    pytest.param("logistics00", "probLOGISTICS-4-0", 10, marks=pytest.mark.slow),
+    pytest.param("logistics00", "probLOGISTICS-4-0", 100, marks=pytest.mark.slow),
+    pytest.param("elevators-opt08-strips", "p01", 10, marks=pytest.mark.slow),
+    pytest.param("elevators-opt08-strips", "p01", 100, marks=pytest.mark.slow),
+]
+
+
+def kstar_costs(domain: str, problem: str, k: int) -> list[float]:
+    planners = pytest.importorskip("kstar_planner.planners")
+    result = planners.plan_topk(IPC / domain / "domain.pddl", IPC / domain / f"{problem}.pddl",
+                                k, timeout=300)
+    return sorted(float(p["cost"]) for p in result["plans"])
+
+
+@pytest.mark.parametrize("domain,problem,k", KSTAR)
+def test_costs_equal_kstar(domain, problem, k):
+    task, dom, prob = task_of(IPC / domain / "domain.pddl", IPC / domain / f"{problem}.pddl")
+    plans = list(itertools.islice(TopK(task), k))
+    assert [p.cost for p in plans] == kstar_costs(domain, problem, k)
+    assert len({p.names for p in plans}) == k
+    for p in plans[:: max(1, k // 10)]:
+        assert validate_plan(dom, prob, list(p.names)).cost == p.cost
+    counts = Counter(p.cost for p in plans)
+    assert sum(counts.values()) == k
