@@ -72,24 +72,53 @@ def frame_renderer(job: FrameJob):
 
 def render_frames(job: FrameJob, states: Sequence[FrameState], workers: int = 1,
                   on_frame: Callable[[], None] | None = None) -> Iterator[np.ndarray]:
-    """The frames of `states`, in order, rendered by `workers` processes."""
-    workers = max(1, min(workers, -(-len(states) // CHUNK)))
+    """The frames of `states`, in order, rendered by `workers` processes.
+
+    A run of identical states (a pause) is rendered once and repeated.
+    """
+    unique, repeats = _runs(states)
+    workers = max(1, min(workers, -(-len(unique) // CHUNK)))
     if workers == 1:
-        yield from _render_here(job, states, on_frame)
+        frames = _render_here(job, unique)
     else:
-        yield from _render_in_workers(job, states, workers, on_frame)
+        frames = _render_in_workers(job, unique, workers)
+    try:
+        for frame, count in zip(frames, repeats, strict=True):
+            for _ in range(count):
+                if on_frame:
+                    on_frame()
+                yield frame
+    finally:
+        frames.close()  # stops the workers now, also when the consumer gave up early
 
 
-def _render_here(job, states, on_frame):
+def _runs(states: Sequence[FrameState]) -> tuple[list[FrameState], list[int]]:
+    unique: list[FrameState] = []
+    repeats: list[int] = []
+    last = None
+    for state in states:
+        key = _key(state)
+        if key == last:
+            repeats[-1] += 1
+        else:
+            unique.append(state)
+            repeats.append(1)
+            last = key
+    return unique, repeats
+
+
+def _key(state: FrameState) -> tuple:
+    poses = tuple((name, np.asarray(pose).tobytes()) for name, pose in sorted(state.poses.items()))
+    return state.q, poses, state.fingers_closed, state.label, state.step, state.steps
+
+
+def _render_here(job, states):
     with frame_renderer(job) as renderer:
         for state in states:
-            frame = renderer.render(state)
-            if on_frame:
-                on_frame()
-            yield frame
+            yield renderer.render(state)
 
 
-def _render_in_workers(job, states, workers, on_frame):
+def _render_in_workers(job, states, workers):
     chunks = [list(states[i:i + CHUNK]) for i in range(0, len(states), CHUNK)]
     # spawn, not fork: the parent may hold a PyBullet client and a progress thread.
     ctx = multiprocessing.get_context("spawn")
@@ -103,11 +132,7 @@ def _render_in_workers(job, states, workers, on_frame):
             process.start()
         for c in range(len(chunks)):
             w = c % workers
-            frames = _receive(queues[w], processes[w])
-            for frame in frames:
-                if on_frame:
-                    on_frame()
-                yield frame
+            yield from _receive(queues[w], processes[w])
         for process in processes:
             process.join(timeout=10)
     finally:

@@ -67,24 +67,19 @@ def _load_modes(anchor: Path, sol: Solution, domain):
     modes_path = solution_file.resolve_input(anchor, sol.modes)
     if modes_path is None or not modes_path.is_file() or domain is None:
         return None
-    try:
-        from tampcli.geometry.scene import load_modes
-    except ImportError:
-        return None
+    from tampcli.geometry.scene import load_modes
+
     return load_modes(modes_path, domain)
 
 
 def mode_kind_of(modes):
-    """A `mode_kind(action) -> kind | None` callable over a Modes value."""
+    """A `mode_kind(action) -> kind | None` callable over a Modes value (None: unknown)."""
     from tampcli.render.replay import schema_of
 
     def mode_kind(action: str) -> str | None:
         if modes is None:
             return None
-        mode = modes.get(schema_of(action)) if hasattr(modes, "get") else None
-        if mode is None:
-            return "none"
-        return getattr(mode, "kind", None)
+        return modes.get_mode(schema_of(action)).kind
 
     return mode_kind
 

@@ -147,3 +147,43 @@ def test_solution_without_trajectory(tmp_path):
     with pytest.raises(SolutionFileError, match="nothing to render"):
         render_solution(path, tmp_path / "o.mp4", RenderOptions(**SMALL))
     assert not (tmp_path / "o.mp4").exists()
+
+
+@pytest.mark.parametrize("modes,panels", [(None, 2), ("modes.toml", 2),
+                                          ("modes_note_moves.toml", 3)])
+def test_modes_decide_which_actions_get_a_panel(tmp_path, modes, panels):
+    from render_solutions import PANDA, panda_solution
+
+    from tampcli.solution import Solution
+
+    sol = panda_solution(with_note=True)
+    sol = Solution(**{**sol.__dict__, "modes": str(PANDA / modes) if modes else None})
+    report = render_solution(sol, None, RenderOptions(**SMALL), keyframes=tmp_path / "k.png")
+    assert report["panels"] == panels
+
+
+def test_a_pause_is_rendered_once(panda_json):
+    from tampcli.render.frames import _runs
+    from tampcli.render.inputs import load_inputs
+    from tampcli.render.video import _plan
+
+    replay, _ = _plan(load_inputs(panda_json), RenderOptions(**SMALL))
+    states = replay.states(8)
+    unique, repeats = _runs(states)
+    assert sum(repeats) == len(states) and len(unique) < len(states)
+    assert repeats[0] >= 2  # the start pause: 0.25 s at 8 fps
+
+
+def test_abandoning_a_parallel_render_stops_its_workers(panda_json):
+    import multiprocessing
+
+    from tampcli.render.frames import FrameJob, render_frames
+    from tampcli.render.inputs import load_inputs
+    from tampcli.render.video import _plan
+
+    inputs = load_inputs(panda_json)
+    replay, camera = _plan(inputs, RenderOptions(**SMALL))
+    frames = render_frames(FrameJob(inputs.scene, camera, 64, 48), replay.states(8), workers=2)
+    assert next(frames).shape == (48, 64, 3)
+    frames.close()
+    assert not [p for p in multiprocessing.active_children() if p.name.startswith("tampcli")]
