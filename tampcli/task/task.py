@@ -133,40 +133,42 @@ class Task:
         return any(op.cond_effects for op in self.operators)
 
     def closure(self, state: frozenset[int]) -> frozenset[int]:
-        """The state with every derived fact it implies (stratified fixpoint)."""
+        """The state with every derived fact it implies (stratified fixpoint).
+
+        Per layer, a counter per rule of its positive body facts not yet
+        true; a rule fires when it reaches 0 and none of its negated facts
+        (basic, or from a lower layer, hence settled) holds.
+        """
         if not self._layers:
             return state
         facts = set(state)
-        for rules, by_pos in self._layers:
-            counters = {}
+        for heads, negs, counts, by_pos, unconditional in self._layers:
+            counters = counts[:]
             queue = []
-            # counters count against the layer's starting facts; every fact
-            # added later goes through the queue exactly once
-            base = frozenset(facts)
-            for i, rule in enumerate(rules):
-                if rule.neg and not rule.neg.isdisjoint(base):
-                    continue
-                missing = len(rule.pos - base) if rule.pos else 0
-                if missing == 0:
-                    if rule.head not in facts:
-                        facts.add(rule.head)
-                        queue.append(rule.head)
-                else:
-                    counters[i] = missing
+            for i in unconditional:
+                neg = negs[i]
+                if (neg is None or neg.isdisjoint(facts)) and heads[i] not in facts:
+                    facts.add(heads[i])
+                    queue.append(heads[i])
+            for fact in [f for f in facts if f in by_pos]:
+                for i in by_pos[fact]:
+                    left = counters[i] - 1
+                    counters[i] = left
+                    if left == 0:
+                        neg = negs[i]
+                        if (neg is None or neg.isdisjoint(facts)) and heads[i] not in facts:
+                            facts.add(heads[i])
+                            queue.append(heads[i])
             while queue:
                 fact = queue.pop()
                 for i in by_pos.get(fact, ()):
-                    left = counters.get(i)
-                    if left is None:
-                        continue
-                    if left == 1:
-                        del counters[i]
-                        head = rules[i].head
-                        if head not in facts:
-                            facts.add(head)
-                            queue.append(head)
-                    else:
-                        counters[i] = left - 1
+                    left = counters[i] - 1
+                    counters[i] = left
+                    if left == 0:
+                        neg = negs[i]
+                        if (neg is None or neg.isdisjoint(facts)) and heads[i] not in facts:
+                            facts.add(heads[i])
+                            queue.append(heads[i])
         return frozenset(facts)
 
     # ------------------------------------------------------------ search API
@@ -237,10 +239,16 @@ def _axiom_layers(axioms: tuple[Axiom, ...]) -> tuple:
         by_layer.setdefault(ax.layer, []).append(ax)
     layers = []
     for layer in sorted(by_layer):
-        rules = tuple(by_layer[layer])
+        rules = by_layer[layer]
         by_pos: dict[int, list[int]] = {}
         for i, rule in enumerate(rules):
             for f in rule.pos:
                 by_pos.setdefault(f, []).append(i)
-        layers.append((rules, {k: tuple(v) for k, v in by_pos.items()}))
+        layers.append((
+            [r.head for r in rules],
+            [r.neg or None for r in rules],
+            [len(r.pos) for r in rules],
+            {k: tuple(v) for k, v in by_pos.items()},
+            [i for i, r in enumerate(rules) if not r.pos],
+        ))
     return tuple(layers)

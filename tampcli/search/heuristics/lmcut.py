@@ -62,18 +62,48 @@ class LMCut:
                             push(heap, (nc, q))
         return dist, choice
 
+    def _lower(self, cut, costs, dist, choice) -> None:
+        """Propagate the h_max decreases caused by cheaper cut actions."""
+        r = self.relaxed
+        pre, pre_of, adds = r.pre, r.pre_of, r.add
+        heap = []
+        for a in cut:
+            nc = dist[choice[a]] + costs[a]
+            for q in adds[a]:
+                if nc < dist[q]:
+                    dist[q] = nc
+                    heap.append((nc, q))
+        heapq.heapify(heap)
+        push, pop = heapq.heappush, heapq.heappop
+        while heap:
+            c, f = pop(heap)
+            if c > dist[f]:
+                continue
+            for a in pre_of[f]:
+                if choice[a] is None:
+                    continue
+                best, arg = -1.0, None
+                for p in pre[a]:
+                    if dist[p] > best:
+                        best, arg = dist[p], p
+                choice[a] = arg
+                nc = best + costs[a]
+                for q in adds[a]:
+                    if nc < dist[q]:
+                        dist[q] = nc
+                        push(heap, (nc, q))
+
     def __call__(self, state) -> float:
         r = self.relaxed
         goal, n_facts = r.goal, r.n_facts
         pre_of, adds, achievers = r.pre_of, r.add, self.achievers
         costs = r.cost[:]
+        dist, choice = self._hmax(state, costs)
+        if dist[goal] == INF:
+            return INF
+        roots = [*state, r.init_fact]
         h = 0.0
-        while True:
-            dist, choice = self._hmax(state, costs)
-            if dist[goal] == INF:
-                return INF
-            if dist[goal] == 0.0:
-                return h
+        while dist[goal] > 0.0:
             zone = bytearray(n_facts)
             zone[goal] = 1
             stack = [goal]
@@ -84,25 +114,31 @@ class LMCut:
                     if p is not None and costs[a] == 0.0 and not zone[p]:
                         zone[p] = 1
                         stack.append(p)
+            # the justification graph has an edge choice(a) -> q for every
+            # add q of a: the cut is every edge from the facts reachable
+            # without entering the goal zone into the goal zone
             reached = bytearray(n_facts)
-            stack = [*state, r.init_fact]
-            for f in stack:
+            for f in roots:
                 reached[f] = 1
+            stack = roots[:]
             cut = []
             while stack:
                 f = stack.pop()
                 for a in pre_of[f]:
                     if choice[a] != f:
                         continue
-                    targets = adds[a]
-                    if any(zone[q] for q in targets):
+                    into_zone = False
+                    for q in adds[a]:
+                        if zone[q]:
+                            into_zone = True
+                        elif not reached[q]:
+                            reached[q] = 1
+                            stack.append(q)
+                    if into_zone:
                         cut.append(a)
-                    else:
-                        for q in targets:
-                            if not reached[q]:
-                                reached[q] = 1
-                                stack.append(q)
             m = min(costs[a] for a in cut)
             h += m
             for a in cut:
                 costs[a] -= m
+            self._lower(cut, costs, dist, choice)
+        return h

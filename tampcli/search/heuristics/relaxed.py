@@ -124,18 +124,26 @@ class RelaxedTask:
             c, f = pop(heap)
             if c > dist[f]:
                 continue
-            if f == goal:
-                break
-            for a in pre_of[f]:
-                left = unsat[a] - 1
-                unsat[a] = left
-                if additive:
-                    acc[a] += c
-                if left == 0:
-                    nc = (acc[a] if additive else c) + costs[a]
-                    for q in adds[a]:
-                        if nc < dist[q]:
-                            dist[q] = nc
-                            supporter[q] = a
-                            push(heap, (nc, q))
+            # facts reached at the popped cost itself (zero-cost axioms and
+            # auxiliary actions) are settled at once, without the heap
+            level = [f]
+            while level:
+                f = level.pop()
+                if f == goal:
+                    return dist, supporter
+                for a in pre_of[f]:
+                    left = unsat[a] - 1
+                    unsat[a] = left
+                    if additive:
+                        acc[a] += c
+                    if left == 0:
+                        nc = (acc[a] if additive else c) + costs[a]
+                        for q in adds[a]:
+                            if nc < dist[q]:
+                                dist[q] = nc
+                                supporter[q] = a
+                                if nc == c:
+                                    level.append(q)
+                                else:
+                                    push(heap, (nc, q))
         return dist, supporter
