@@ -43,6 +43,9 @@ class Chain:
         self.index = {name: i for i, name in enumerate(self.names)}
         self.n = n
         self.base_pose = np.array(base_pose, dtype=float)
+        # origin @ motion(q) = A + f1(q) B + f2(q) C, precomputed per link:
+        # revolute (Rodrigues, K = [axis]x): A = O, B = O K, C = O K^2,
+        # f1 = sin q, f2 = 1 - cos q; prismatic: B = O T(axis), f1 = q.
         self._plan = []
         for i, link in enumerate(links[1:], start=1):
             origin = link.origin.copy()
@@ -50,8 +53,17 @@ class Chain:
             if link.q_index < 0 and link.joint_type != FIXED and link.fixed_value != 0.0:
                 origin = origin @ _motion(link.joint_type, link.axis, link.fixed_value)
             kind = link.joint_type if link.q_index >= 0 else FIXED
-            z_axis = kind == REVOLUTE and np.allclose(link.axis, (0.0, 0.0, 1.0))
-            self._plan.append((i, link.parent, origin, kind, link.axis, link.q_index, z_axis))
+            b = c = None
+            if kind == REVOLUTE:
+                k = np.zeros((4, 4))
+                x, y, z = link.axis
+                k[:3, :3] = [[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]]
+                b, c = origin @ k, origin @ k @ k
+            elif kind == PRISMATIC:
+                t = np.zeros((4, 4))
+                t[:3, 3] = link.axis
+                b = origin @ t
+            self._plan.append((i, link.parent, origin, b, c, kind, link.q_index))
         # Which variables move each link: ancestors' joints in q.
         self.moved_by = np.zeros((len(links), n), dtype=bool)
         self.joint_link = np.full(n, -1)  # q index -> link whose joint it is
@@ -70,22 +82,16 @@ class Chain:
 
     def fk_list(self, q) -> list[np.ndarray]:
         """World 4x4 frames of all links, in `names` order."""
-        q = np.asarray(q, dtype=float)
-        frames = [None] * len(self.links)
-        frames[0] = self.base_pose
-        for i, parent, origin, kind, axis, qi, z_axis in self._plan:
-            if kind == FIXED:
-                local = origin
-            elif z_axis:
-                c, s = math.cos(q[qi]), math.sin(q[qi])
-                local = origin.copy()
-                r0 = origin[:3, 0].copy()
-                r1 = origin[:3, 1]
-                local[:3, 0] = c * r0 + s * r1
-                local[:3, 1] = c * r1 - s * r0
+        frames = [self.base_pose] * len(self.links)
+        sin, cos = math.sin, math.cos
+        for i, parent, a, b, c, kind, qi in self._plan:
+            if kind == REVOLUTE:
+                v = float(q[qi])
+                frames[i] = frames[parent] @ (a + sin(v) * b + (1.0 - cos(v)) * c)
+            elif kind == PRISMATIC:
+                frames[i] = frames[parent] @ (a + float(q[qi]) * b)
             else:
-                local = origin @ _motion(kind, axis, q[qi])
-            frames[i] = frames[parent] @ local
+                frames[i] = frames[parent] @ a
         return frames
 
     def joint_axes(self, frames) -> tuple[np.ndarray, np.ndarray]:

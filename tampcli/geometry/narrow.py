@@ -4,16 +4,19 @@ FCL 0.7 answers fast but not always right, so every answer is checked:
 
 - Separated: the projections of the solids on FCL's normal n leave a gap
   that bounds the true distance from below; FCL's witness points bound it
-  from above. When the bounds disagree (FCL's GJK stopped on a wrong
-  simplex: centimetres off for boxes and cylinders, fcl#508), our own GJK
-  (gjk.py), warm-started on n, gives the certified distance.
-- Touching or penetrating: our GJK first decides whether the solids are
-  really apart. FCL's EPA returns nonsense for solids that touch face to
-  face (a depth of decimetres towards a far corner; resting contacts do
-  exactly that), so its depth is checked against an upper bound: for any
-  unit direction u, the overlap of the projections on u bounds the depth.
-  When EPA's depth exceeds the best overlap over a few candidate
-  directions, that overlap and its direction are used instead.
+  from above. When the bounds disagree by more than TOLERANCE (FCL's GJK
+  stopped early or on a wrong simplex: micrometres off for meshes,
+  centimetres off for boxes and cylinders, fcl#508), our own GJK (gjk.py),
+  warm-started on n, gives the certified distance.
+- Touching or penetrating: for any unit direction u, the overlap of the
+  two solids' projections on u bounds the penetration depth from above,
+  and a negative overlap proves separation. Over a few candidate
+  directions (FCL's normal, the centre line, the boxes' and cylinders'
+  axes, the world axes): a negative best overlap sends the pair to our
+  GJK; a zero one is a resting contact (distance 0); otherwise EPA's depth
+  is kept unless it exceeds the bound. FCL's EPA returns nonsense for
+  solids that touch face to face (a depth of decimetres towards a far
+  corner; resting contacts do exactly that): the bound catches it.
 """
 
 from __future__ import annotations
@@ -26,87 +29,137 @@ import numpy as np
 from tampcli.geometry.gjk import gjk_distance
 from tampcli.geometry.shapes import Shape
 
-_TOL = 1e-7  # m: the accuracy we certify
+TOLERANCE = 1e-8  # m: the accuracy we certify (finite differences at 1e-4 stay clean)
 
 
-def signed_distance(request, sa: Shape, oa, ta: np.ndarray, sb: Shape, ob, tb: np.ndarray):
+class Placed:
+    """A shape at a world pose, with its support function in world coordinates."""
+
+    __slots__ = ("shape", "t", "rot", "pos", "vertices", "_fcl")
+
+    def __init__(self, shape: Shape, t: np.ndarray):
+        self.shape, self.t = shape, t
+        self.rot, self.pos = t[:3, :3], t[:3, 3]
+        local = shape.vertices
+        self.vertices = None if local is None else local @ self.rot.T + self.pos
+        self._fcl = None
+
+    def fcl_transform(self) -> fcl.Transform:
+        if self._fcl is None:
+            self._fcl = fcl.Transform(self.rot, self.pos)
+        return self._fcl
+
+    def support_point(self, u: np.ndarray) -> np.ndarray:
+        """A world point of the solid maximizing u . p."""
+        if self.vertices is not None:
+            return self.vertices[int((self.vertices @ u).argmax())]
+        return self.rot @ self.shape.support_point(self.rot.T @ u) + self.pos
+
+    def support(self, u: np.ndarray) -> float:
+        """max over the solid of u . p."""
+        if self.vertices is not None:
+            return float((self.vertices @ u).max())
+        return float(u @ self.pos) + self.shape.support(self.rot.T @ u)
+
+    def supports(self, dirs: np.ndarray) -> np.ndarray:
+        """support(u) for each row u of dirs (k, 3)."""
+        if self.vertices is not None:
+            return (self.vertices @ dirs.T).max(axis=0)
+        local = dirs @ self.rot
+        base = dirs @ self.pos
+        kind, size = self.shape.kind, self.shape.size
+        if kind == "sphere":
+            return base + size[0] * np.linalg.norm(dirs, axis=1)
+        r, h = size
+        ends = 0.5 * h * np.abs(local[:, 2])
+        if kind == "cylinder":
+            return base + r * np.hypot(local[:, 0], local[:, 1]) + ends
+        return base + r * np.linalg.norm(local, axis=1) + ends
+
+
+def signed_distance(request, a: Placed, oa, b: Placed, ob):
     """(distance, point on a, point on b, unit normal from a to b), world frame.
 
-    `oa`, `ob` are FCL objects already placed at `ta`, `tb` (4x4 world poses
-    of the shapes themselves).
+    `oa`, `ob` are the FCL objects of the two shapes; they are moved to the
+    placed poses here.
     """
+    oa.setTransform(a.fcl_transform())
+    ob.setTransform(b.fcl_transform())
     result = fcl.DistanceResult()  # keeps the smallest value seen: one per query
     d = float(fcl.distance(oa, ob, request, result))
     p1 = np.array(result.nearest_points[0])
     p2 = np.array(result.nearest_points[1])
     diff = p2 - p1
-    norm = float(np.linalg.norm(diff))
+    norm = math.sqrt(float(diff @ diff))
     normal = None
-    if norm > 1e-9:
+    if norm > 1e-12:
         # When penetrating, FCL's witness points lie inside the other solid,
         # so p2 - p1 points from b to a: flip it.
         normal = diff / norm if d >= 0 else -diff / norm
-    if d > _TOL and normal is not None:
-        if -overlap(sa, ta, sb, tb, normal) >= d - _TOL:
+    if d > TOLERANCE and normal is not None:
+        if d + overlap(a, b, normal) <= TOLERANCE:
             return d, p1, p2, normal
-    guess = normal if normal is not None else tb[:3, 3] - ta[:3, 3]
-    exact = gjk_distance(_support(sa, ta), _support(sb, tb), guess, _TOL)
-    if exact is not None and exact[0] > _TOL:
-        dist, pa, pb = exact
-        return dist, pa, pb, (pb - pa) / dist
-    return _checked_penetration(min(d, 0.0), p1, p2, normal if d <= 0 else None, sa, ta, sb, tb)
+        return _gjk(a, b, normal)
+    return _checked_penetration(min(d, 0.0), p1, p2, normal if d <= 0 else None, a, b)
 
 
-def _support(shape: Shape, t: np.ndarray):
-    rot, pos = t[:3, :3], t[:3, 3]
-    rot_t = rot.T
-
-    def support(u):
-        return rot @ shape.support_point(rot_t @ u) + pos
-
-    return support
-
-
-def overlap(sa: Shape, ta, sb: Shape, tb, u) -> float:
-    """max over a of u.x - min over b of u.x: >= the penetration depth along u."""
-    ha = float(u @ ta[:3, 3]) + sa.support(ta[:3, :3].T @ u)
-    lb = float(u @ tb[:3, 3]) - sb.support(-(tb[:3, :3].T @ u))
-    return ha - lb
+def _gjk(a: Placed, b: Placed, guess):
+    exact = gjk_distance(a.support_point, b.support_point, guess, TOLERANCE)
+    if exact is None:  # intersecting after all: FCL's separation was within its tolerance
+        u = guess / max(np.linalg.norm(guess), 1e-12)
+        depth = overlap(a, b, u)
+        pa = a.support_point(u)
+        return -depth, pa, pa - depth * u, u
+    dist, pa, pb = exact
+    if dist <= TOLERANCE:
+        u = guess / max(np.linalg.norm(guess), 1e-12)
+        return dist, pa, pb, u
+    return dist, pa, pb, (pb - pa) / dist
 
 
-def _candidates(sa: Shape, ta, sb: Shape, tb, normal):
-    dirs = []
+def overlap(a: Placed, b: Placed, u: np.ndarray) -> float:
+    """max over a of u.x - min over b of u.x: >= the penetration depth along u,
+    and minus it is a lower bound on the distance."""
+    return a.support(u) + b.support(-u)
+
+
+_WORLD_AXES = np.vstack([np.eye(3), -np.eye(3)])
+
+
+def _candidates(a: Placed, b: Placed, normal) -> np.ndarray:
+    """Directions (k, 3) on which to bound the penetration depth."""
+    dirs = [_WORLD_AXES]
     if normal is not None:
-        dirs.append(normal)
-    axis = tb[:3, 3] - ta[:3, 3]
-    if np.linalg.norm(axis) > 1e-12:
-        dirs.append(axis / np.linalg.norm(axis))
-    for s, t, sign in ((sa, ta, 1.0), (sb, tb, -1.0)):
-        if s.kind in ("box",):
-            for k in range(3):
-                v = t[:3, k]
-                dirs.append(v if sign * float(v @ axis) >= 0 else -v)
-        elif s.kind in ("cylinder", "capsule"):
-            v = t[:3, 2]
-            dirs.append(v if sign * float(v @ axis) >= 0 else -v)
-    dirs.extend(np.eye(3))
-    dirs.extend(-np.eye(3))
-    return dirs
+        dirs.append(normal[None, :])
+    axis = b.pos - a.pos
+    norm = float(np.linalg.norm(axis))
+    if norm > 1e-12:
+        dirs.append((axis / norm)[None, :])
+    for placed in (a, b):
+        kind = placed.shape.kind
+        if kind == "box":
+            dirs.append(placed.rot.T)
+            dirs.append(-placed.rot.T)
+        elif kind in ("cylinder", "capsule"):
+            dirs.append(placed.rot[:, 2][None, :])
+            dirs.append(-placed.rot[:, 2][None, :])
+    return np.vstack(dirs)
 
 
-def _checked_penetration(d, p1, p2, normal, sa, ta, sb, tb):
-    best_u, best = None, math.inf
-    for u in _candidates(sa, ta, sb, tb, normal):
-        o = overlap(sa, ta, sb, tb, u)
-        if o < best:
-            best, best_u = o, u
+def _checked_penetration(d, p1, p2, normal, a: Placed, b: Placed):
+    dirs = _candidates(a, b, normal)
+    overlaps = a.supports(dirs) + b.supports(-dirs)
+    k = int(overlaps.argmin())
+    best, u = float(overlaps[k]), dirs[k]
+    if best < -TOLERANCE:
+        # A separating direction: FCL's intersection was wrong; measure the gap.
+        return _gjk(a, b, u)
+    if best <= TOLERANCE:
+        # Touching (resting contact): distance 0 along the separating direction.
+        pa = a.support_point(u)
+        return -best, pa, pa - best * u, u
     if normal is not None and -d <= best + 1e-6:
         return d, p1, p2, normal
-    # EPA's answer is not credible: use the best projection direction.
-    u = best_u
-    pa = ta[:3, :3] @ sa.support_point(ta[:3, :3].T @ u) + ta[:3, 3]
-    pb = pa - best * u
-    if normal is None and best <= 0:
-        # Touching: FCL gave coincident points, which stay the witnesses.
-        return -best, p1, p2, u
-    return -best, pa, pb, u
+    # EPA's depth exceeds a certified bound: use the best projection direction.
+    pa = a.support_point(u)
+    return -best, pa, pa - best * u, u

@@ -84,7 +84,12 @@ def primitive(kind: str, size, local=None) -> Shape:
         radius = r + h / 2
     else:
         raise ValueError(kind)
-    return Shape(geom, local, local[:3, 3].copy(), radius, kind, tuple(float(v) for v in size))
+    vertices = None
+    if kind == "box":
+        half = 0.5 * np.asarray(size, dtype=float)
+        vertices = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)]) * half
+    return Shape(geom, local, local[:3, 3].copy(), radius, kind, tuple(float(v) for v in size),
+                 vertices)
 
 
 def mesh_hull(path: str, scale=(1.0, 1.0, 1.0), local=None) -> Shape:

@@ -197,6 +197,10 @@ class World:
             return base - 1.0, base + 1.0
         return np.min(los, axis=0), np.max(his, axis=0)
 
+    def aabb(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """Axis-aligned box (lo, hi) of a scene body at its start pose."""
+        return self._aabb(self._bodies[name])
+
     def _aabb(self, uid: int) -> tuple[np.ndarray, np.ndarray]:
         pb, c = self.pb, self.client
         los, his = [], []

@@ -85,34 +85,41 @@ def test_penetration_sign_and_normal(planar):
 
 
 def _finite_difference(checker, q, contact, h=1e-4, **kw):
-    grad = np.zeros(len(q))
-    moved = 0.0
-    for i in range(len(q)):
-        dq = np.zeros(len(q))
-        dq[i] = h
-        plus = checker.pair_distance(q + dq, contact.a, contact.b, **kw)
-        minus = checker.pair_distance(q - dq, contact.a, contact.b, **kw)
-        grad[i] = (plus.distance - minus.distance) / (2 * h)
-        moved = max(moved, np.linalg.norm(plus.point_a - minus.point_a),
-                    np.linalg.norm(plus.point_b - minus.point_b))
-    return grad, moved
+    """Central differences of the pair's distance, and whether they look smooth.
+
+    Smooth: steps h and h/2 agree; a witness point switching features in
+    between (a kink of the distance) makes them disagree.
+    """
+    def grad(step):
+        out = np.zeros(len(q))
+        for i in range(len(q)):
+            dq = np.zeros(len(q))
+            dq[i] = step
+            plus = checker.pair_distance(q + dq, contact.a, contact.b, **kw).distance
+            minus = checker.pair_distance(q - dq, contact.a, contact.b, **kw).distance
+            out[i] = (plus - minus) / (2 * step)
+        return out
+
+    full, half = grad(h), grad(h / 2)
+    return full, bool(np.max(np.abs(full - half)) < 1e-3)
 
 
 @pytest.mark.parametrize(("name", "activation"), [("panda", 0.05), ("planar", 0.3)])
 def test_distance_gradients_match_finite_differences(name, activation, request):
     world, checker = request.getfixturevalue(name)
-    checked = 0
+    checked = skipped = 0
     for q in _random_qs(world, 30, seed=12):
         for contact in checker.distances(q, activation=activation):
-            numeric, moved = _finite_difference(checker, q, contact)
-            if moved > 5e-3:  # the witness point jumped to another feature
+            numeric, smooth = _finite_difference(checker, q, contact)
+            if not smooth:
+                skipped += 1
                 continue
-            # GJK on curved shapes converges to ~1e-7 m: a 1e-4 step sees it.
-            curved = "ball" in contact.b or "post" in contact.b or name == "planar"
-            np.testing.assert_allclose(contact.gradient, numeric, atol=5e-3 if curved else 1e-4,
+            # Separated: certified to 1e-8 m. Penetrating: FCL's EPA converges to ~1e-6 m.
+            atol = 2e-4 if contact.distance > 0 else 1e-3
+            np.testing.assert_allclose(contact.gradient, numeric, atol=atol,
                                        err_msg=f"{contact.a} {contact.b} {contact.distance}")
             checked += 1
-    assert checked >= 10
+    assert checked >= 10 and skipped <= checked / 4
 
 
 def test_held_object_contacts_and_gradient(panda):
@@ -126,7 +133,8 @@ def test_held_object_contacts_and_gradient(panda):
     assert all(c.b != "body:a" for c in contacts)
     assert all(c.b not in ("link:panda_hand", "link:panda_leftfinger") for c in held)
     table = next(c for c in held if c.b == "body:table")
-    numeric, _ = _finite_difference(checker, q, table, held=("a", grasp))
+    numeric, smooth = _finite_difference(checker, q, table, held=("a", grasp))
+    assert smooth
     np.testing.assert_allclose(table.gradient, numeric, atol=1e-4)
     # The held cube's centre is the tool point: its lowest corner is 0.0354 m below it.
     tool_z = world.tool_pose(q)[2, 3]

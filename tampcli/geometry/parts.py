@@ -1,0 +1,93 @@
+"""The collision parts of a World: shapes on robot links and on scene bodies.
+
+Also the static facts the checker derives from them once: rigid groups of
+links, the robot's support, and the self-collision pairs worth checking.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import fcl
+import numpy as np
+
+from tampcli.geometry import transforms
+from tampcli.geometry.shapes import Shape, fcl_transform, mesh_hull, primitive
+from tampcli.geometry.shapes import pybullet_link_shapes as link_shapes
+
+SUPPORT_TOLERANCE = 0.005  # m
+
+
+@dataclass
+class Part:
+    """One collision object: a shape on a robot link (link >= 0), a body, or the held object."""
+
+    owner: str  # "link:NAME", "body:NAME" or "held:NAME"
+    shape: Shape
+    obj: fcl.CollisionObject
+    link: int = -1  # chain index for robot shapes
+    body: str | None = None
+    identity_local: bool = False  # the shape frame is the owner's frame (skip a product)
+
+    def __post_init__(self):
+        self.identity_local = bool(np.allclose(self.shape.local, np.eye(4), atol=1e-12))
+
+
+def fcl_object(shape: Shape) -> fcl.CollisionObject:
+    return fcl.CollisionObject(shape.geometry, fcl_transform(shape.local))
+
+
+def robot_parts(world) -> list[Part]:
+    parts = []
+    for i, link in enumerate(world.chain.links):
+        for shape in link_shapes(world.pb, world.client, world.robot_id, link.pb_index):
+            parts.append(Part(f"link:{link.name}", shape, fcl_object(shape), i))
+    return parts
+
+
+def body_shapes(world, body) -> list[Shape]:
+    """Shapes of a scene body in its own frame (primitives exact, meshes as hulls)."""
+    if body.shape in ("box", "cylinder", "sphere"):
+        return [primitive(body.shape, body.size)]
+    if body.shape == "mesh":
+        return [mesh_hull(body.mesh, body.scale)]
+    pb, client, uid = world.pb, world.client, world.pb_body(body.name)
+    base_inv = transforms.pose_inverse(body.matrix)
+    shapes = []
+    for link in range(-1, pb.getNumJoints(uid, physicsClientId=client)):
+        if link == -1:
+            frame = np.eye(4)
+        else:
+            state = pb.getLinkState(uid, link, computeForwardKinematics=True,
+                                    physicsClientId=client)
+            frame = base_inv @ transforms.pose(transforms.quat_to_matrix(state[5]), state[4])
+        for s in link_shapes(pb, client, uid, link):
+            shapes.append(dataclasses.replace(s, local=frame @ s.local,
+                                              center=frame[:3, :3] @ s.center + frame[:3, 3]))
+    return shapes
+
+
+def rigid_groups(chain) -> list[int]:
+    """Per link: the index of the link whose joint (a variable) last moves it; 0 = base."""
+    group = [0] * len(chain.links)
+    for i, link in enumerate(chain.links):
+        if i > 0:
+            group[i] = i if link.q_index >= 0 else group[link.parent]
+    return group
+
+
+def find_support(world, fixed: set[str]) -> frozenset[str]:
+    """Fixed bodies the robot stands (planar: slides) on: top face at its base height."""
+    spec = world.scene.robot
+    base = spec.base_pose[:3, 3]
+    bottom = base[2] - (spec.height / 2 if spec.model == "planar" else 0.0)
+    found = set()
+    for name in fixed:
+        lo, hi = world.aabb(name)
+        if abs(hi[2] - bottom) > SUPPORT_TOLERANCE:
+            continue
+        inside = lo[0] <= base[0] <= hi[0] and lo[1] <= base[1] <= hi[1]
+        if inside or spec.model == "planar":
+            found.add(name)
+    return frozenset(found)
