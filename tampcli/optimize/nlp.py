@@ -72,6 +72,11 @@ def violation_of(eq, ineq) -> tuple[float, int, str]:
     return best
 
 
+def nlp_feasible(evaluate, layout, x) -> bool:
+    eq, ineq = (_Evaluator(evaluate, layout)(x)[i] for i in (2, 4))
+    return violation_of(eq, ineq)[0] <= FEASIBILITY
+
+
 def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float,
               ftol: float = 1e-8) -> NlpOutcome:
     ev = _Evaluator(evaluate, layout)

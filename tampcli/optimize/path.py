@@ -44,13 +44,17 @@ def samples(T: int, checks: int):
 
 def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: Held | None,
                   moved: dict, kin, checker, T: int, checks: int, rest_z: float | None,
-                  label: str):
-    """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed)."""
+                  label: str, keep=None):
+    """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed).
+
+    `keep(tau) -> bool` selects the sample points that get collision rows
+    (all when None).
+    """
     opts = problem.options
     layout = phase_layout(problem, T)
     poses = {name: pose_of_matrix(t) for name, t in moved.items()}
     keys = row_keys(list(problem.bodies), m.sliding, held)
-    pts = samples(T, checks)
+    pts = [p for p in samples(T, checks) if keep is None or keep(p[0])]
     n = problem.n
 
     def block(i):
@@ -85,6 +89,25 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         return rows
 
     return evaluate, layout
+
+
+def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker, T, checks,
+                     horizon: float) -> dict[float, float]:
+    """tau -> smallest distance at that sample (capped at `horizon`), ignoring as the rows do."""
+    w = np.asarray(x).reshape(T - 1, problem.n)
+    qs = np.vstack([q_a, w, q_b])
+    out = {}
+    spec = (held.name, held.grasp) if held is not None else None
+    for tau, i, s in samples(T, checks):
+        ignore = set(m.sliding)
+        if tau < 1:
+            ignore |= m.leave_contact
+        if tau > T - 1:
+            ignore |= m.enter_contact
+        q = (1 - s) * qs[i] + s * qs[i + 1]
+        contacts = checker.distances(q, moved, spec, frozenset(ignore), horizon)
+        out[tau] = min((c.distance for c in contacts), default=horizon)
+    return out
 
 
 def via_points(problem: TrajectoryProblem, q_a, q_b, T: int, held_height: float, moved: dict,

@@ -19,14 +19,15 @@ from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.grips import Kinematics
 from tampcli.optimize.init import final_guess, keyframe_guess
-from tampcli.optimize.nlp import solve_nlp
+from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, solve_nlp
 from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.path import phase_rows_fn, via_points
+from tampcli.optimize.path import phase_rows_fn, sample_clearance, via_points
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import STAGES, TrajectoryResult
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
 
 GRIP_BOUND = 4 * math.pi
+SCREEN = 0.15  # m: samples further than this from everything get no collision rows
 
 
 class _Run:
@@ -251,15 +252,41 @@ def _phase_label(problem, k) -> str:
 
 
 def _solve_phase(run: _Run, ctx, T, checks):
+    """Coarse (waypoints only), then, if a point between waypoints is too close, fine.
+
+    The fine NLP keeps rows only for the samples within SCREEN of something at
+    the coarse solution (the rest stay far during a local solve), and is
+    redone with every sample if the answer fails the full check.
+    """
     problem = run.problem
     m = problem.motions[ctx.index]
+    label = _phase_label(problem, ctx.index)
     held_height = 0.0
     if ctx.held is not None:
         held_height = 2 * problem.bodies[ctx.held.name].half[2]
-    evaluate, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved,
-                                     run.kin, run.checker, T, checks, ctx.rest_z,
-                                     _phase_label(problem, ctx.index))
-    x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved, run.rng)
+
+    def rows(n_checks, keep=None):
+        return phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
+                             run.checker, T, n_checks, ctx.rest_z, label, keep)
+
+    x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved, run.rng).reshape(-1)
     bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
                       strict=True))
-    return run.nlp(evaluate, layout, x0.reshape(-1), bounds)
+    coarse, layout = rows(0)
+    first = run.nlp(coarse, layout, x0, bounds)
+    if checks == 0 or first.status != "solved":
+        return first
+    clearance = sample_clearance(problem, m, ctx.q_a, ctx.q_b, first.x, ctx.held, ctx.moved,
+                                 run.checker, T, checks, SCREEN)
+    margin = problem.options.margin
+    if min(clearance.values()) >= margin - FEASIBILITY:
+        # Same cost, more constraints: a coarse optimum feasible for the fine
+        # sampling is the fine optimum.
+        return first
+    near = {tau for tau, d in clearance.items() if d < SCREEN}
+    screened, _ = rows(checks, lambda tau: tau in near or tau == int(tau))
+    out = run.nlp(screened, layout, first.x, bounds)
+    full, _ = rows(checks)
+    if out.status != "solved" or nlp_feasible(full, layout, out.x):
+        return out
+    return run.nlp(full, layout, out.x, bounds)

@@ -1,0 +1,200 @@
+"""Trajectory optimization speed: a Panda picks a cube and places it over a 30 cm wall.
+
+Figures (written to bench/results/trajopt.md):
+- the whole pipeline of one skeleton (final -> keyframes -> path, verify at 10x)
+  at T = 10 waypoints per phase: median wall time over N runs (target <= 1 s), and
+  collisions found by the 10x check (target 0);
+- scaling in T (5, 10, 20, 40);
+- where the time goes: inside SLSQP itself vs in our callbacks (collision
+  queries, FK and Jacobians, the rest of the row assembly);
+- peer, in the same process: the carry phase's path NLP with scipy's default
+  finite-difference Jacobian instead of ours (same rows, same start).
+
+Run: .venv/bin/python bench/trajopt.py [--runs 5] [--ts 5,10,20,40] [--no-peer]
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import platform
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))
+sys.path.insert(0, str(ROOT / "tests" / "optimize"))
+
+from helpers import load_modes, load_scene, ops  # noqa: E402
+
+from tampcli.geometry.collision import CollisionChecker  # noqa: E402
+from tampcli.geometry.world import World  # noqa: E402
+from tampcli.optimize import nlp as nlp_mod  # noqa: E402
+from tampcli.optimize.grips import Kinematics  # noqa: E402
+from tampcli.optimize.options import OptimizeOptions  # noqa: E402
+from tampcli.optimize.problem import lower  # noqa: E402
+from tampcli.optimize.solve import solve  # noqa: E402
+from tampcli.optimize.verify import verify  # noqa: E402
+
+OUT = ROOT / "bench" / "results" / "trajopt.md"
+PLAN = ("(pick a start)", "(place a goal)")
+
+
+class Clock:
+    """Seconds spent in named places (wrappers installed by this script only)."""
+
+    def __init__(self):
+        self.seconds: dict[str, float] = {}
+
+    def wrap(self, name, fn):
+        def timed(*args, **kwargs):
+            t = time.perf_counter()
+            try:
+                return fn(*args, **kwargs)
+            finally:
+                self.seconds[name] = self.seconds.get(name, 0.0) + time.perf_counter() - t
+        return timed
+
+
+class TimedChecker:
+    def __init__(self, checker, clock):
+        self._checker = checker
+        self.distances = clock.wrap("collision queries", checker.distances)
+
+    def __getattr__(self, name):
+        return getattr(self._checker, name)
+
+
+def run_once(scene, modes, world, checker, T: int, clock: Clock | None):
+    options = OptimizeOptions(waypoints=T, time_limit=600.0)
+    problem = lower(ops(*PLAN), scene, modes, world, options, checker=checker)
+    t = time.perf_counter()
+    result = solve(problem, "path")
+    seconds = time.perf_counter() - t
+    collisions = None
+    if result.solved:
+        collisions = sum("collision" in v for v in verify(problem, result, factor=10))
+    return seconds, result, collisions
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--runs", type=int, default=5)
+    ap.add_argument("--ts", default="5,10,20,40")
+    ap.add_argument("--no-peer", action="store_true")
+    args = ap.parse_args()
+    scene, modes = load_scene("wall"), load_modes("arm-pick-place")
+    lines = ["# Trajectory optimization benchmark", "",
+             f"`bench/trajopt.py --runs {args.runs} --ts {args.ts}` on {platform.machine()}, "
+             f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} when it started "
+             "(a shared machine: read the ratios, not the absolute seconds).",
+             "Skeleton: (pick a start) (place a goal), Panda, cube a carried over a 30 cm "
+             "wall (tests/optimize/scenes/wall.scene.toml). Each run solves final -> "
+             "keyframes -> path from scratch and runs `verify` at 10x.", ""]
+    with World(scene) as world:
+        clock = Clock()
+        checker = TimedChecker(CollisionChecker(world), clock)
+        original_eval = nlp_mod._Evaluator.__call__
+        original_min = nlp_mod.minimize
+        original_frame = Kinematics.frame
+        nlp_mod._Evaluator.__call__ = clock.wrap("callbacks (all)", original_eval)
+        nlp_mod.minimize = clock.wrap("SLSQP incl. callbacks", original_min)
+        Kinematics.frame = clock.wrap("tool FK + Jacobians", original_frame)
+        try:
+            runs = [run_once(scene, modes, world, checker, 10, clock) for _ in range(args.runs)]
+        finally:
+            nlp_mod._Evaluator.__call__ = original_eval
+            nlp_mod.minimize = original_min
+            Kinematics.frame = original_frame
+        secs = [r[0] for r in runs]
+        solved = sum(r[1].solved for r in runs)
+        collisions = [r[2] for r in runs if r[2] is not None]
+        lines += ["## T = 10 waypoints per phase", "",
+                  "| figure | target | measured |", "| --- | --- | ---: |",
+                  f"| median wall time per skeleton (final+keyframes+path+verify), "
+                  f"{args.runs} runs | <= 1 s | {statistics.median(secs):.2f} s |",
+                  f"| min / max | | {min(secs):.2f} / {max(secs):.2f} s |",
+                  f"| solved | {args.runs}/{args.runs} | {solved}/{args.runs} |",
+                  f"| collisions found by the 10x check | 0 | {sum(collisions)} |",
+                  f"| path cost (sum of squared joint steps) | | "
+                  f"{statistics.median(r[1].cost for r in runs if r[1].solved):.3f} rad^2 |",
+                  f"| SLSQP iterations (all NLPs of a run), median | | "
+                  f"{statistics.median(r[1].iterations for r in runs)} |",
+                  f"| NLP solves per run | | {runs[0][1].nlp_solves} |", ""]
+        s = clock.seconds
+        total = sum(secs)
+        inside = s.get("SLSQP incl. callbacks", 0.0)
+        cb = s.get("callbacks (all)", 0.0)
+        coll = s.get("collision queries", 0.0)
+        fk = s.get("tool FK + Jacobians", 0.0)
+        lines += ["## Where the time goes (all T = 10 runs together)", "",
+                  "| part | seconds | share of the total |", "| --- | ---: | ---: |"]
+        for name, value in (("SLSQP itself (minimize minus our callbacks)", inside - cb),
+                            ("collision queries (geometry.CollisionChecker.distances)", coll),
+                            ("tool FK + Jacobians (numpy chain)", fk),
+                            ("rest of the callbacks (rows, assembly)", cb - coll - fk),
+                            ("outside SLSQP (IK init, via points, verify, glue)",
+                             total - inside)):
+            lines.append(f"| {name} | {value:.2f} | {100 * value / total:.0f}% |")
+        lines += ["", "Collision queries include the ones `verify` and the sample screening "
+                  "make outside SLSQP.", "", "## Scaling in T", "",
+                  "| T | wall time (s) | status | cost | iterations | collisions at 10x |",
+                  "| ---: | ---: | --- | ---: | ---: | ---: |"]
+        for T in [int(t) for t in args.ts.split(",")]:
+            sec, result, col = run_once(scene, modes, world, checker, T, None)
+            cost = f"{result.cost:.3f}" if result.cost is not None else "-"
+            lines.append(f"| {T} | {sec:.2f} | {result.status} | {cost} | "
+                         f"{result.iterations} | {col if col is not None else '-'} |")
+        if not args.no_peer:
+            lines += ["", *peer(scene, modes, world)]
+    OUT.write_text("\n".join(lines) + "\n")
+    print("\n".join(lines))
+    return 0
+
+
+def peer(scene, modes, world) -> list[str]:
+    """The carry phase's path NLP at T = 5: exact Jacobians vs scipy's finite differences."""
+    from scipy.optimize import minimize
+
+    from tampcli.optimize.assemble import walk
+    from tampcli.optimize.path import phase_rows_fn, via_points
+
+    T = 5
+    options = OptimizeOptions(waypoints=T, time_limit=600.0)
+    problem = lower(ops(*PLAN), scene, modes, world, options)
+    kf = solve(problem, "keyframes")
+    ctx = walk(problem, kf.keyframes, kf.choices, world.start)[1]
+    m = problem.motions[1]
+    kin = Kinematics(world)
+    evaluate, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, kin,
+                                     problem.checker, T, 0, None, "carry")
+    x0 = via_points(problem, ctx.q_a, ctx.q_b, T, 0.05, ctx.moved,
+                    np.random.default_rng(0)).reshape(-1)
+    bounds = list(zip(np.tile(world.lower, T - 1), np.tile(world.upper, T - 1), strict=True))
+    t = time.perf_counter()
+    ours = nlp_mod.solve_nlp(evaluate, layout, x0, bounds, 200, time.perf_counter() + 600)
+    t_ours = time.perf_counter() - t
+    ev = nlp_mod._Evaluator(evaluate, layout)
+    cons = [{"type": "ineq", "fun": lambda x: ev(x)[4]}]
+    t = time.perf_counter()
+    res = minimize(lambda x: ev(x)[0], x0, method="SLSQP", bounds=bounds, constraints=cons,
+                   options={"maxiter": 200, "ftol": 1e-8})
+    t_fd = time.perf_counter() - t
+    v = nlp_mod.violation_of(np.zeros(0), ev(res.x)[4])[0]
+    return ["## Peer: exact Jacobians vs finite differences", "",
+            f"Carry phase only, T = {T}, waypoints-only collision rows, same start.", "",
+            "| variant | seconds | status | cost | callback evaluations |",
+            "| --- | ---: | --- | ---: | ---: |",
+            f"| exact Jacobians (ours) | {t_ours:.2f} | {ours.status} | {ours.cost:.4f} | - |",
+            f"| scipy 2-point finite differences | {t_fd:.2f} | "
+            f"{'solved' if v <= nlp_mod.FEASIBILITY else 'infeasible'} | {res.fun:.4f} | "
+            f"{ev.calls} |",
+            f"| ratio (finite differences / ours) | {t_fd / max(t_ours, 1e-9):.1f}x | | | |"]
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,149 @@
+"""Every constraint Jacobian against central finite differences.
+
+The kinematics are numpy float64 (not PyBullet's float32 FK), so a step of
+1e-6 is fine for the smooth rows; collision rows use 1e-5 and points where
+no witness pair switches within the step.
+"""
+
+import numpy as np
+import pytest
+
+from tampcli.optimize.grips import Grip, Kinematics, held_pose
+from tampcli.optimize.init import final_guess, keyframe_guess
+from tampcli.optimize.path import phase_layout, phase_rows_fn
+from tampcli.optimize.problem import lower
+from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
+
+from .helpers import ops
+
+
+def _fd(f, x, h):
+    cols = []
+    for i in range(len(x)):
+        e = np.zeros_like(x)
+        e[i] = h
+        cols.append((f(x + e) - f(x - e)) / (2 * h))
+    return np.array(cols).T
+
+
+def _check(rows_fn, layout, x, h=1e-6, tol=1e-5):
+    slices = layout.slices()
+
+    def parts(xx):
+        rows = rows_fn(layout.unpack(xx))
+        eq, jeq = rows.eq.assemble(slices, layout.size)
+        ineq, jin = rows.ineq.assemble(slices, layout.size)
+        grad = np.zeros(layout.size)
+        for block, g in rows.cost_grad.items():
+            if block in slices:
+                grad[slices[block]] += g
+        return rows.cost, grad, eq, jeq, ineq, jin
+
+    cost, grad, eq, jeq, ineq, jin = parts(x)
+    assert len(eq) + len(ineq) > 0
+    fd_cost = _fd(lambda xx: np.array([parts(xx)[0]]), x, h)[0]
+    np.testing.assert_allclose(grad, fd_cost, atol=tol)
+    if len(eq):
+        np.testing.assert_allclose(jeq, _fd(lambda xx: parts(xx)[2], x, h), atol=tol)
+    if len(ineq):
+        np.testing.assert_allclose(jin, _fd(lambda xx: parts(xx)[4], x, h), atol=tol)
+    return eq, ineq
+
+
+@pytest.mark.parametrize("kind", ["top", "push", "side"])
+def test_held_pose_jacobians(wall, kind):
+    _, _, world = wall
+    kin = Kinematics(world)
+    rng = np.random.default_rng(1)
+    grip = {"top": Grip("top", (0.0, 0.0, 0.01), psi=0.7),
+            "push": Grip("push", (-0.04, 0.0, 0.0)),
+            "side": Grip("side", (0.0, 0.0, 0.02), rho=0.08, yaw=0.3)}[kind]
+    q = rng.uniform(world.lower, world.upper)
+    t = 0.4
+
+    def value(qq, tt):
+        h = held_pose(kin.frame(qq), grip, tt)
+        return np.concatenate([h.pos, h.axes.reshape(-1, order="F")])
+
+    h = held_pose(kin.frame(q), grip, t)
+    analytic = np.vstack([h.dpos_dq, h.daxes_dq[:, 0], h.daxes_dq[:, 1], h.daxes_dq[:, 2]])
+    np.testing.assert_allclose(analytic, _fd(lambda qq: value(qq, t), q, 1e-6), atol=1e-6)
+    dt = np.concatenate([h.dpos_dt, h.daxes_dt[:, 0], h.daxes_dt[:, 1], h.daxes_dt[:, 2]])
+    fd_t = (value(q, t + 1e-6) - value(q, t - 1e-6)) / 2e-6
+    np.testing.assert_allclose(dt, fd_t, atol=1e-6)
+
+
+def test_final_rows_place_and_stack(wall):
+    """Region containment, stacking on a moved body, separations, reach."""
+    scene, modes, world = wall
+    # Place a in goal then pick it and place it again: the second placement
+    # is checked against a region and against the first (a moved body).
+    problem = lower(ops("(pick a start)", "(place a goal)", "(pick a goal)",
+                        "(place a start)"), scene, modes, world)
+    assert problem.error is None
+    layout = final_layout(problem)
+    vals, origins = final_guess(problem)
+    x = layout.pack(vals) + np.random.default_rng(0).normal(0, 0.03, layout.size)
+    _check(lambda v: final_rows(problem, v, origins), layout, x)
+
+
+def test_keyframe_rows_without_collisions(wall):
+    scene, modes, world = wall
+    problem = lower(ops("(pick a start)", "(place a goal)"), scene, modes, world)
+    placements, _ = final_guess(problem)
+    vals, choices = keyframe_guess(problem, placements, world.start,
+                                   np.random.default_rng(0))
+    layout = keyframe_layout(problem)
+    x = layout.pack(vals) + np.random.default_rng(1).normal(0, 0.05, layout.size)
+    kin = Kinematics(world)
+    eq, _ = _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker,
+                                           world.start, collisions=False), layout, x)
+    assert np.max(np.abs(eq)) > 1e-3  # away from the solution: the test sees real slopes
+
+
+def test_keyframe_rows_planar_push_with_grip_parameter(planar):
+    scene, modes, world = planar
+    problem = lower(ops("(push o start goal floor)"), scene, modes, world)
+    assert problem.grip_params == (0,)
+    placements, _ = final_guess(problem)
+    vals, choices = keyframe_guess(problem, placements, world.start, np.random.default_rng(0))
+    layout = keyframe_layout(problem)
+    x = layout.pack(vals) + np.random.default_rng(2).normal(0, 0.02, layout.size)
+    kin = Kinematics(world)
+    _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start),
+           layout, x, h=1e-6, tol=1e-5)
+
+
+def test_collision_rows_at_active_contacts(wall):
+    """Arm near the wall with the held cube: link and held-object rows are active."""
+    scene, modes, world = wall
+    problem = lower(ops("(pick a start)", "(place a goal)"), scene, modes, world)
+    placements, _ = final_guess(problem)
+    vals, choices = keyframe_guess(problem, placements, world.start, np.random.default_rng(0))
+    kin = Kinematics(world)
+    from tampcli.optimize.assemble import walk
+
+    contexts = walk(problem, vals, choices, world.start)
+    ctx = contexts[1]  # carrying a over the wall
+    m = problem.motions[1]
+    T = 4
+    evaluate, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, kin,
+                                     problem.checker, T, 1, None, "carry")
+    assert layout == phase_layout(problem, T)
+    # Between the straight joint-space line (through the wall) and the lifted via
+    # points: pick a blend with several active rows and no resting face contact
+    # (a face-on-face distance has no unique gradient).
+    from tampcli.optimize.path import via_points
+
+    line = np.concatenate([ctx.q_a + (ctx.q_b - ctx.q_a) * i / T for i in range(1, T)])
+    lifted = via_points(problem, ctx.q_a, ctx.q_b, T, 0.05, ctx.moved,
+                        np.random.default_rng(0)).reshape(-1)
+    limit = problem.options.activation - problem.options.margin - 1e-9
+    for blend in np.linspace(0.2, 0.8, 13):
+        x = (1 - blend) * line + blend * lifted
+        ineq, _ = evaluate(x).ineq.assemble(layout.slices(), layout.size)
+        if (ineq < limit).sum() >= 3 and np.all(np.abs(ineq + problem.options.margin) > 2e-3):
+            break
+    else:
+        pytest.fail("no blend with active, non-degenerate contacts")
+    _check(lambda v: evaluate(layout.pack(v)), layout, x, h=1e-5, tol=2e-3)

@@ -1,0 +1,106 @@
+"""Whole stages on real scenes: the seed's planar example, a Panda over a wall,
+an infeasible placement."""
+
+import math
+
+import numpy as np
+import pytest
+
+from tampcli.optimize.options import OptimizeOptions
+from tampcli.optimize.problem import lower
+from tampcli.optimize.solve import solve
+from tampcli.optimize.verify import verify
+
+from .helpers import ops
+
+PLANAR_SKELETONS = {
+    "push": ("(push o start goal floor)",),
+    "pick-place": ("(pick o start)", "(place o goal)"),
+}
+
+
+def _segment_hits_pillar(scene, a, b):
+    """Does the straight line from a to b pass through the pillar (robot radius included)?"""
+    pillar = scene.body("pillar")
+    c = np.array(pillar.pose[:2])
+    r = pillar.size[0] + scene.robot.radius
+    for s in np.linspace(0, 1, 200):
+        if np.linalg.norm(a + s * (b - a) - c) < r:
+            return True
+    return False
+
+
+@pytest.mark.parametrize("skeleton", sorted(PLANAR_SKELETONS))
+def test_seed_planar_example_both_skeletons_solve(planar, skeleton):
+    scene, modes, world = planar
+    problem = lower(ops(*PLANAR_SKELETONS[skeleton]), scene, modes, world)
+    final = solve(problem, "final")
+    assert final.solved
+    keyframes = solve(problem, "keyframes", final)
+    assert keyframes.solved and keyframes.bound_kind == "heuristic"
+    path = solve(problem, "path", keyframes)
+    assert path.solved, path.worst_constraint
+    assert verify(problem, path, factor=10) == []
+    # The obstacle is in the way of the straight line and the path goes around it.
+    start = np.asarray(scene.body("o").pose[:2])
+    goal = np.asarray(path.object_poses["o"][-1][:2])
+    assert _segment_hits_pillar(scene, start, goal)
+    traj = path.trajectory
+    pillar = np.array(scene.body("pillar").pose[:2])
+    dense = np.vstack([a + s * (b - a) for a, b in zip(traj, traj[1:], strict=False)
+                       for s in np.linspace(0, 1, 10)])
+    clearance = np.linalg.norm(dense - pillar, axis=1) - scene.body("pillar").size[0]
+    assert clearance.min() >= scene.robot.radius - 1e-3
+    # The object ends inside the goal region.
+    region = scene.region("goal")
+    assert np.all(np.abs(goal - np.array(region.center)) <= 0.5 * np.array(region.size))
+    # Cost: the seed's smoothness term, and the keyframe value bounds it (Cauchy-Schwarz).
+    assert path.cost == pytest.approx(float(np.sum(np.diff(traj, axis=0) ** 2)))
+    assert keyframes.cost <= path.cost + 1e-9
+    assert len(path.phases) + 1 == len(path.object_poses["o"])
+
+
+def test_panda_over_a_wall(wall):
+    scene, modes, world = wall
+    problem = lower(ops("(pick a start)", "(place a goal)"), scene, modes, world,
+                    OptimizeOptions(waypoints=6, time_limit=120.0))
+    result = solve(problem, "path")
+    assert result.solved, result.worst_constraint
+    assert verify(problem, result, factor=10) == []
+    final = np.asarray(result.object_poses["a"][-1])
+    region = scene.region("goal")
+    assert np.all(np.abs(final[:2] - np.array(region.center)) <= 0.5 * np.array(region.size))
+    assert final[2] == pytest.approx(0.025, abs=5e-3)
+    # The wall was in the way: straight joint interpolation of the carry collides.
+    carry = result.phases[2]
+    assert carry.attached == "a"
+    q0, q1 = result.trajectory[carry.start], result.trajectory[carry.end]
+    grasp = result.grasps["a"]
+    straight = [problem.checker.min_distance(q0 + s * (q1 - q0), None, ("a", grasp),
+                                             frozenset({"table"})) for s in np.linspace(0, 1, 21)]
+    assert min(straight) < 0
+    assert result.kkt_residual is not None and math.isfinite(result.kkt_residual)
+
+
+def test_blocked_region_is_infeasible_quickly_and_says_why(wall):
+    scene, modes, world = wall
+    problem = lower(ops("(pick a start)", "(place a blocked)"), scene, modes, world)
+    for stage in ("final", "keyframes", "path"):
+        result = solve(problem, stage)
+        assert result.status == "infeasible"
+        assert "(place a blocked)" in result.worst_constraint
+        assert "crate" in result.worst_constraint or "blocked" in result.worst_constraint
+        assert result.iterations < problem.options.max_iterations
+
+
+def test_object_larger_than_region_is_proved_infeasible(planar):
+    scene, modes, world = planar
+    import dataclasses
+
+    small = dataclasses.replace(scene, regions=tuple(
+        dataclasses.replace(r, size=(0.05, 0.05)) if r.name == "goal" else r
+        for r in scene.regions))
+    problem = lower(ops("(push o start goal floor)"), small, modes, world)
+    result = solve(problem, "final")
+    assert result.status == "infeasible" and result.proved
+    assert "does not fit region goal" in result.worst_constraint
