@@ -61,11 +61,12 @@ class Plan:
 
 
 def default_heuristic(task: Task) -> Callable[[frozenset], float]:
-    """LM-cut when the task allows it (the most informed admissible one), else h_max."""
-    from tampcli.search.heuristics import HMax, LMCut
+    """LM-cut with its landmarks when the task allows it, else h_max (both admissible)."""
+    from tampcli.search.heuristics import HMax
+    from tampcli.search.topk_landmarks import LandmarkCut
 
     try:
-        return LMCut(task)
+        return LandmarkCut(task)
     except UnsupportedFeatureError:
         return HMax(task)
 

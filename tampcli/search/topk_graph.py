@@ -10,9 +10,11 @@ and g + h(s_{i+1}) <= g_plan(s_{i+1}) + h*(s_{i+1}) <= B, so it was expanded
 too (with a g that can only have dropped since). Hence the subgraph of
 expanded states (`distances` works on it) contains every plan of cost <= B.
 
-Heuristic values are computed lazily: a child is queued with the parent's
-bound h(parent) - c(parent, child), itself admissible (h(parent) <= h*(parent)
-<= c + h*(child)), and evaluated only when it comes out of the queue.
+Heuristic values are computed lazily: a child is queued with a bound known
+from its parent, h(parent) - c(parent, child) (admissible: h(parent) <=
+h*(parent) <= c + h*(child)), or better the parent's landmarks that the
+operator does not touch (topk_landmarks.py), and the heuristic runs only
+when the child comes out of the queue at a key <= B.
 """
 
 from __future__ import annotations
@@ -39,6 +41,9 @@ class BoundedGraph:
         self.ids: dict[frozenset, int] = {}
         self.g: list[float] = []
         self.h: list[float | None] = []
+        self.hlow: list[float] = []  # best admissible bound known before evaluating h
+        self._landmarks: dict[int, list] = {}  # of evaluated states not yet expanded
+        self._with_landmarks = getattr(heuristic, "landmarks", None)
         # per state, (op index, successor id) of every applicable op once expanded
         self.succ: list[tuple[tuple[int, int], ...] | None] = []
         self.goal: list[bool] = []
@@ -55,6 +60,7 @@ class BoundedGraph:
         return not self.open
 
     def _id(self, state: frozenset, g: float, h_bound: float) -> int:
+        """The id of `state`, reached with cost g, queued if new or reached more cheaply."""
         sid = self.ids.get(state)
         if sid is None:
             sid = len(self.states)
@@ -62,15 +68,17 @@ class BoundedGraph:
             self.states.append(state)
             self.g.append(g)
             self.h.append(None)
+            self.hlow.append(max(h_bound, 0.0))
             self.succ.append(None)
             self.goal.append(False)
-        elif g >= self.g[sid]:
-            return sid
-        self.g[sid] = g
+        else:
+            if h_bound > self.hlow[sid]:
+                self.hlow[sid] = h_bound
+            if g >= self.g[sid]:
+                return sid
+            self.g[sid] = g
         known = self.h[sid]
-        self.seq += 1
-        heapq.heappush(self.open, (g + (known if known is not None else max(h_bound, 0.0)),
-                                   g, self.seq, sid))
+        self._requeue(g + (known if known is not None else self.hlow[sid]), g, sid)
         return sid
 
     def next_key(self) -> float:
@@ -93,14 +101,13 @@ class BoundedGraph:
             key, g, _, sid = heapq.heappop(self.open)
             h = self.h[sid]
             if h is None:
-                self.evaluations += 1
-                if self.evaluations % 64 == 0:
-                    self.check_time()
-                h = self.h[sid] = max(self.heuristic(self.states[sid]), key - g)
+                if g + self.hlow[sid] > key:  # a better bound arrived since it was queued
+                    self._requeue(g + self.hlow[sid], g, sid)
+                    continue
+                h = self.h[sid] = self._evaluate(sid)
                 if g + h > key:  # the lazy bound was loose: queue with the true one
                     if h < INF:
-                        self.seq += 1
-                        heapq.heappush(self.open, (g + h, g, self.seq, sid))
+                        self._requeue(g + h, g, sid)
                     continue
             succ = self.succ[sid]
             if succ is None:
@@ -109,12 +116,43 @@ class BoundedGraph:
                     self.check_time()
                 state = self.states[sid]
                 self.goal[sid] = self.task.is_goal(state)
+                child_bound = self._child_bounds(sid, h)
                 succ = self.succ[sid] = tuple(
-                    (index[id(op)], self._id(nxt, g + op.cost, h - op.cost))
+                    (index[id(op)], self._id(nxt, g + op.cost, child_bound(index[id(op)])))
                     for op, nxt in successors(state))
             else:
                 for op, nid in succ:
                     self._id(self.states[nid], g + costs[op], h - costs[op])
+
+    def _requeue(self, key: float, g: float, sid: int) -> None:
+        self.seq += 1
+        heapq.heappush(self.open, (key, g, self.seq, sid))
+
+    def _evaluate(self, sid: int) -> float:
+        self.evaluations += 1
+        if self.evaluations % 64 == 0:
+            self.check_time()
+        state = self.states[sid]
+        if self._with_landmarks is None:
+            value = self.heuristic(state)
+        else:
+            value, found = self._with_landmarks(state)
+            if found:
+                self._landmarks[sid] = (value, found)
+        return max(value, self.hlow[sid])  # both admissible: keep the larger
+
+    def _child_bounds(self, sid: int, h: float):
+        """op index -> admissible bound on the h of the successor by that op."""
+        costs = self.costs
+        marked = self._landmarks.pop(sid, None)
+        if marked is None:
+            return lambda op: h - costs[op]
+        total, found = marked
+        charged: dict[int, float] = {}
+        for m, ops in found:
+            for op in ops:
+                charged[op] = charged.get(op, 0.0) + m
+        return lambda op: max(h - costs[op], total - charged.get(op, 0.0))
 
     def distances(self) -> list[float]:
         """Cheapest cost to a goal, within the expanded part, for every known state."""
