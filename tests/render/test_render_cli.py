@@ -18,6 +18,8 @@ def test_render_mp4_and_keyframes(cli, planar_json, tmp_path):
     assert run.code == 0, run.err
     assert f"wrote {out}" in run.out and "1 keyframe panels" in run.out
     assert iio.imread(out, index=None).shape == (round(1.6 * 6) + 1, 72, 96, 3)
+    # not a terminal: progress comes as plain lines on stderr, the last one complete
+    assert "rendering v.mp4: 11/11 frames" in run.err.splitlines()[-1]
     assert "Traceback" not in run.err
 
 

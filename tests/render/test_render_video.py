@@ -187,3 +187,19 @@ def test_abandoning_a_parallel_render_stops_its_workers(panda_json):
     assert next(frames).shape == (48, 64, 3)
     frames.close()
     assert not [p for p in multiprocessing.active_children() if p.name.startswith("tampcli")]
+
+
+def test_progress_bar_on_a_terminal(planar_json, tmp_path):
+    import io
+
+    from rich.console import Console
+
+    from tampcli.cli.ui import UI
+
+    out, err = io.StringIO(), io.StringIO()
+    ui = UI(Console(file=out, force_terminal=True, width=100),
+            Console(file=err, force_terminal=True, width=100))
+    assert ui.interactive
+    report = render_solution(planar_json, tmp_path / "v.gif", RenderOptions(**SMALL), ui=ui)
+    assert report["frames"] > 0
+    assert "rendering v.gif" in err.getvalue() and "\x1b[" in err.getvalue()
