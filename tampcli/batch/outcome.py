@@ -46,7 +46,7 @@ def classify(returncode: int, timed_out: bool, stdout: str, stderr: str,
         limit = f"memory limit {memory_mb} MB" if memory_mb is not None else "no memory limit"
         return Outcome("crashed", error=f"out of memory ({limit})")
     if returncode == ExitCode.INTERNAL:
-        return Outcome("crashed", error=_tail(stderr) or "internal error (exit 70)")
+        return Outcome("crashed", error=_error_lines(stderr) or "internal error (exit 70)")
     if returncode not in (ExitCode.OK, ExitCode.NO_SOLUTION):
         return Outcome("crashed", error=_with_tail(f"exit code {returncode}", stderr))
     if data is None:
@@ -71,7 +71,7 @@ def _from_json(returncode: int, data: dict[str, Any]) -> Outcome:
             length = len(plans[0].get("actions") or [])
     else:  # solve --json: the solution.json keys
         cost = data.get("cost")
-        if cost is None:
+        if cost is None or data.get("scene") is None:  # solved symbolically: no trajectory
             cost = data.get("symbolic_cost")
         if data.get("plan") is not None:
             length = len(data["plan"])
@@ -117,6 +117,13 @@ def _signal_message(signum: int, stderr: str, memory_mb: int | None) -> str:
     if memory_mb is not None and signum in (signal.SIGSEGV, signal.SIGABRT, signal.SIGKILL):
         message += f" (the memory limit, {memory_mb} MB, may have been reached)"
     return _with_tail(message, stderr)
+
+
+def _error_lines(stderr: str) -> str:
+    """The CLI's `error: ...` lines, without what libraries print on stderr
+    (PyBullet's build banner, warnings); all of stderr when there are none."""
+    lines = [line[len("error: "):] for line in stderr.splitlines() if line.startswith("error: ")]
+    return _tail("\n".join(lines)) if lines else _tail(stderr)
 
 
 def _with_tail(message: str, stderr: str) -> str:

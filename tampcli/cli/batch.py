@@ -16,6 +16,9 @@ from tampcli.batch.runner import RunOptions
 from tampcli.batch.summary import summarize, table, write_csv
 from tampcli.errors import ExitCode, UsageError
 
+DEFAULT_GRACE_S = 5.0
+VIDEO_GRACE_S = 120.0
+
 
 def add_parser(p) -> None:
     p.add_argument("paths", nargs="+", metavar="PATH",
@@ -24,8 +27,10 @@ def add_parser(p) -> None:
                    help="problems run at once (default: the number of cores)")
     p.add_argument("--time-limit", type=float, default=None, metavar="S",
                    help="seconds per problem, given to the planner; killed at S + --grace")
-    p.add_argument("--grace", type=float, default=5.0, metavar="S",
-                   help="seconds past --time-limit before a problem is killed (default 5)")
+    p.add_argument("--grace", type=float, default=None, metavar="S",
+                   help="seconds past --time-limit before a problem is killed (default 5; "
+                        f"{VIDEO_GRACE_S:g} with --video-dir: the video is rendered after "
+                        "the solve, within the grace period)")
     p.add_argument("--memory-limit", type=int, default=None, metavar="MB",
                    help="address-space cap per problem, in MB")
     p.add_argument("--out", default="results.jsonl", metavar="FILE",
@@ -42,7 +47,10 @@ def add_parser(p) -> None:
 
 
 def run(args, ui) -> int:
-    options = RunOptions(time_limit=args.time_limit, grace=args.grace,
+    grace = args.grace
+    if grace is None:
+        grace = VIDEO_GRACE_S if args.video_dir else DEFAULT_GRACE_S
+    options = RunOptions(time_limit=args.time_limit, grace=grace,
                          memory_mb=args.memory_limit, symbolic=args.symbolic,
                          video_dir=args.video_dir)
     workers = args.jobs if args.jobs is not None else (os.cpu_count() or 1)

@@ -26,14 +26,20 @@ def test_plan_unsolvable_and_limit_keep_their_status():
 
 def test_solve_json_uses_trajectory_cost_and_keeps_symbolic_cost():
     out = json.dumps({"status": "solved", "reason": None, "plan": ["(pick a)", "(place a t)"],
-                      "symbolic_cost": 2, "cost": 1.25, "stats": {"total": 3.0}})
+                      "scene": "p01.scene.toml", "symbolic_cost": 2, "cost": 1.25,
+                      "stats": {"total": 3.0}})
     o = classify(0, False, out, "", None, None)
     assert (o.status, o.cost, o.plan_length) == ("solved", 1.25, 2)
     assert o.stats == {"total": 3.0, "symbolic_cost": 2}
 
 
-def test_solve_without_a_scene_falls_back_to_symbolic_cost():
-    out = json.dumps({"status": "solved", "plan": ["(a)"], "symbolic_cost": 1, "cost": None})
+def test_solve_without_a_scene_reports_the_symbolic_cost():
+    # What `solve` prints for a problem without a scene: an empty trajectory of cost 0.
+    out = json.dumps({"status": "solved", "plan": ["(a)", "(b)"], "scene": None,
+                      "symbolic_cost": 2.0, "cost": 0.0, "trajectory": []})
+    assert classify(0, False, out, "", None, None).cost == 2.0
+    out = json.dumps({"status": "solved", "plan": ["(a)"], "scene": "s.toml", "symbolic_cost": 1,
+                      "cost": None})
     assert classify(0, False, out, "", None, None).cost == 1
 
 
@@ -72,3 +78,10 @@ def test_memory_error_is_named_but_a_quoted_word_in_a_file_is_not():
 def test_timeout_wins_over_the_signal_that_killed_it():
     o = classify(-signal.SIGKILL, True, "", "", 2, None)
     assert o.status == "timeout" and "(2 s)" in o.error
+
+
+def test_internal_error_message_skips_library_noise_on_stderr():
+    stderr = ("pybullet build time: Jan 29 2025 23:17:20\n"
+              "error: internal error: ValueError: bad shape (rerun with --traceback)\n")
+    o = classify(70, False, "", stderr, None, None)
+    assert o.error == "internal error: ValueError: bad shape (rerun with --traceback)"
