@@ -12,7 +12,7 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from tampcli.errors import SceneError
+from tampcli.errors import SceneError, source_line_at
 from tampcli.geometry.tomlsrc import read_toml
 from tampcli.pddl import ast
 
@@ -85,8 +85,9 @@ def load_modes(path: str | Path, domain: ast.Domain) -> Modes:
     for action_name, data in src.data.items():
         line = src.line(action_name)
         if not isinstance(data, dict):
+            line = src.line(None, 0, action_name)
             raise SceneError(f"expected a table [{action_name}], got a value", path=src.path,
-                             line=src.line(None, 0, action_name), key=action_name)
+                             line=line, key=action_name, source_line=source_line_at(src.text, line))
         action = domain.action(action_name.lower())
         if action is None:
             known = ", ".join(a.name for a in domain.actions) or "none"

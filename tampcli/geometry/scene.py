@@ -17,7 +17,7 @@ from pathlib import Path
 
 import numpy as np
 
-from tampcli.errors import SceneError
+from tampcli.errors import SceneError, source_line_at
 from tampcli.geometry import transforms
 from tampcli.geometry.tomlsrc import TomlSource, read_toml
 from tampcli.pddl import ast
@@ -204,7 +204,8 @@ def _build_scene(src: TomlSource) -> Scene:
             raise src.error(f"unknown key; expected one of {', '.join(_TOP_KEYS)}", key, 0,
                             name=key)
     if "robot" not in data:
-        raise SceneError("missing [robot] table", path=src.path, line=1, key="robot")
+        raise SceneError("missing [robot] table", path=src.path, line=1, key="robot",
+                         source_line=source_line_at(src.text, 1))
     if not isinstance(data["robot"], dict):
         raise src.error("must be a table [robot]", None, 0, "robot", name="robot")
     robot = _robot(src, data["robot"])
@@ -255,13 +256,20 @@ class _Reader:
         name = f"{self.table}.{key}" if key else self.table
         return self.src.error(message, self.table, self.index, key, name)
 
+    def missing(self, key: str, what: str | None = None) -> SceneError:
+        """A missing key: located at the entry's `name` line, else its header."""
+        message = f"missing key {key!r}" + (f" ({what})" if what else "")
+        name = f"{self.table}.{key}"
+        anchor = "name" if "name" in self.data else None
+        return self.src.error(message, self.table, self.index, anchor, name)
+
     def has(self, key: str) -> bool:
         return key in self.data
 
     def string(self, key: str, default=None, required=False, choices=None) -> str | None:
         if key not in self.data:
             if required:
-                raise self.error(f"missing key {key!r}", None)
+                raise self.missing(key)
             return default
         value = self.data[key]
         if not isinstance(value, str) or not value:
@@ -279,7 +287,7 @@ class _Reader:
     def number(self, key: str, default: float | None = None, positive=False) -> float:
         if key not in self.data:
             if default is None:
-                raise self.error(f"missing key {key!r}", None)
+                raise self.missing(key)
             return default
         value = self.data[key]
         if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
@@ -291,7 +299,7 @@ class _Reader:
     def numbers(self, key: str, lengths, what: str, positive=False, required=True):
         if key not in self.data:
             if required:
-                raise self.error(f"missing key {key!r} ({what})", None)
+                raise self.missing(key, what)
             return None
         value = self.data[key]
         ok = (isinstance(value, list)
@@ -489,9 +497,12 @@ def _replace(body: Body, **changes) -> Body:
 
 
 def check_modes_against_scene(src: TomlSource | None, scene: Scene, modes, domain, problem):
-    """Every PDDL object a geometric action can take must exist in the scene.
+    """Every PDDL object a geometric action can take must have geometry in the scene.
 
-    `object` parameters need a body; `on`/`to` parameters a body or a region.
+    For each role (`object`, `on`, `to`) of each geometric mode, the objects
+    of the parameter's type need a body or a region. Whether the geometry
+    fits the role (grasping a region, say) is left to the symbolic
+    preconditions and the optimizer.
     """
     objects = pddl_objects(domain, problem)
     parents = _type_parents(domain)
@@ -503,33 +514,22 @@ def check_modes_against_scene(src: TomlSource | None, scene: Scene, modes, domai
             param = getattr(mode, role)
             if param is None:
                 continue
-            if not param.startswith("?"):
-                candidates = [param]
-            else:
+            if param.startswith("?"):
                 types = next(p.types for p in action.params if p.name == param)
-                candidates = [n for n, t in objects.items()
-                              if any(_is_subtype(tt, types, parents) for tt in t)]
+                candidates = sorted(n for n, t in objects.items()
+                                    if any(_is_subtype(tt, types, parents) for tt in t))
+            else:
+                candidates = [param]
             for name in candidates:
-                ok = scene.has_body(name) or (role != "object" and scene.has_region(name))
-                if ok and role == "object" and scene.body(name).fixed and mode.kind in (
-                        "grasp", "place", "push"):
-                    msg = (f"{name!r} is fixed, but action {mode.action!r} would "
-                           f"{mode.kind} it ({role} = {param})")
-                    raise _scene_error(src, scene, msg, name)
-                if not ok:
-                    what = "an object" if role == "object" else "an object or a region"
-                    msg = (f"PDDL object {name!r} may be `{role}` of action {mode.action!r} "
-                           f"({role} = {param!r}), but the scene has no {what} named so")
-                    raise SceneError(msg, path=scene.path, line=1, key=role if src is None
-                                     else "objects")
-
-
-def _scene_error(src, scene, message, body_name) -> SceneError:
-    index = next(i for i, b in enumerate(scene.bodies) if b.name == body_name)
-    if src is None:
-        return SceneError(message, path=scene.path, line=scene.bodies[index].line,
-                          key="objects.fixed")
-    return src.error(message, "objects", index, "fixed", "objects.fixed")
+                if scene.has_body(name) or scene.has_region(name):
+                    continue
+                where = f" ({modes.path}:{mode.line})" if mode.line else ""
+                message = (f"no object or region {name!r} in the scene, but action "
+                           f"{mode.action!r} may {mode.kind} it ({role} = {param!r}{where})")
+                line = src.line("objects") if src is not None else None
+                raise SceneError(message, path=scene.path, line=line or 1, key="objects",
+                                 source_line=source_line_at(src.text, line or 1)
+                                 if src is not None else None)
 
 
 def _type_parents(domain) -> dict[str, tuple[str, ...]]:

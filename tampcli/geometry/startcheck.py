@@ -25,7 +25,7 @@ def start_problems(world, checker) -> list[tuple[str, str, str]]:
                 continue
             c = checker.body_distance(a.name, a.matrix, b.name, b.matrix)
             if c.distance < -OVERLAP_TOLERANCE:
-                problems.append(("objects.pose", a.name, f"{a.name!r} and {b.name!r} overlap by "
+                problems.append(("objects.pose", b.name, f"{b.name!r} overlaps {a.name!r} by "
                                  f"{-c.distance * 1000:.1f} mm in the start state"))
     q = world.start
     for name, v, lo, hi in zip(world.joint_names, q, world.lower, world.upper, strict=True):
