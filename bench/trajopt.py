@@ -29,7 +29,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tests" / "optimize"))
 
-from helpers import load_modes, load_scene, ops  # noqa: E402
+from helpers import load, ops  # noqa: E402
 
 from tampcli.geometry.collision import CollisionChecker  # noqa: E402
 from tampcli.geometry.world import World  # noqa: E402
@@ -87,7 +87,7 @@ def main() -> int:
     ap.add_argument("--ts", default="5,10,20,40")
     ap.add_argument("--no-peer", action="store_true")
     args = ap.parse_args()
-    scene, modes = load_scene("wall"), load_modes("arm-pick-place")
+    _, _, scene, modes = load("wall")
     lines = ["# Trajectory optimization benchmark", "",
              f"`bench/trajopt.py --runs {args.runs} --ts {args.ts}` on {platform.machine()}, "
              f"{os.cpu_count()} cores, load average {os.getloadavg()[0]:.1f} when it started "

@@ -132,12 +132,12 @@ def _check_objects(problem: TrajectoryProblem, result) -> list[str]:
                 g1 = transforms.pose_inverse(world.tool_pose(traj[phase.end])) @ vs[pi + 1]
                 drift = _distance(g0, g1)
                 if drift > RIGID:
-                    out.append(f"phase {pi}: {name} moves relative to the tool by "
-                               f"{100 * drift:.1f} cm")
-            elif _distance(vs[pi], vs[pi + 1]) > 1e-6 and not (
-                    phase.action is not None and phase.start == phase.end):
-                out.append(f"phase {pi} ({phase.action or 'motion'}): {name} moves but is not "
-                           "attached")
+                    out.append(f"{phase.action or f'motion phase {pi}'}: {name} moves "
+                               f"relative to the tool by {100 * drift:.1f} cm")
+            elif _distance(vs[pi], vs[pi + 1]) > 1e-6:
+                what = ("jumps" if phase.start == phase.end else "moves but is not attached")
+                out.append(f"{phase.action or f'motion phase {pi}'}: {name} {what} "
+                           f"({100 * _distance(vs[pi], vs[pi + 1]):.1f} cm)")
         if phase.action is None:
             continue
         step = next(step_iter, None)

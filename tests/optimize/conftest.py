@@ -1,23 +1,21 @@
-import os
-
 import pytest
 
 from tampcli.geometry.world import World
 
-from .helpers import load_modes, load_scene
+from .helpers import load
 
-os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+
+def _world(name):
+    _, _, scene, modes = load(name)
+    with World(scene) as world:
+        yield scene, modes, world
 
 
 @pytest.fixture(scope="module")
 def wall():
-    scene = load_scene("wall")
-    with World(scene) as world:
-        yield scene, load_modes("arm-pick-place"), world
+    yield from _world("wall")
 
 
 @pytest.fixture(scope="module")
 def planar():
-    scene = load_scene("planar")
-    with World(scene) as world:
-        yield scene, load_modes("planar-push"), world
+    yield from _world("planar")

@@ -57,10 +57,10 @@ def test_pick_place_phases_and_keyframes(wall):
 
 def test_symbolic_action_is_an_instant_phase(planar):
     scene, _, world = planar
-    from .helpers import _Mode
+    from tampcli.geometry.modes import Mode
 
-    modes = {"pick": _Mode("pick", "grasp", "?o", params=("?o", "?from")),
-             "wait": _Mode("wait", "none")}
+    modes = {"pick": Mode("pick", "grasp", "?o", params=("?o", "?from")),
+             "wait": Mode("wait", "none")}
     p = lower(ops("(wait)", "(pick o start)"), scene, modes, world)
     assert p.error is None
     assert [s.kind for s in p.steps] == ["none", "grasp"]
