@@ -34,11 +34,14 @@ class LMCut:
                 self.achievers[q].append(a)
 
     def _hmax(self, state, costs):
+        """h_max of every fact; each action's choice (costliest precondition) and,
+        per fact, the actions that chose it (may hold stale entries: check `choice`)."""
         r = self.relaxed
         pre_of, adds = r.pre_of, r.add
         unsat = r.pre_count[:]
         dist = [INF] * r.n_facts
         choice: list = [None] * r.n_actions
+        chosen_by: list[list[int]] = [[] for _ in range(r.n_facts)]
         heap = [(0.0, f) for f in state]
         heap.append((0.0, r.init_fact))
         for _, f in heap:
@@ -49,23 +52,29 @@ class LMCut:
             c, f = pop(heap)
             if c > dist[f]:
                 continue
+            chosen = chosen_by[f]
             for a in pre_of[f]:
                 left = unsat[a] - 1
                 unsat[a] = left
                 if left == 0:
                     # facts pop in non-decreasing order: f is the costliest precondition
                     choice[a] = f
+                    chosen.append(a)
                     nc = c + costs[a]
                     for q in adds[a]:
                         if nc < dist[q]:
                             dist[q] = nc
                             push(heap, (nc, q))
-        return dist, choice
+        return dist, choice, chosen_by
 
-    def _lower(self, cut, costs, dist, choice) -> None:
-        """Propagate the h_max decreases caused by cheaper cut actions."""
+    def _lower(self, cut, costs, dist, choice, chosen_by) -> None:
+        """Propagate the h_max decreases caused by cheaper cut actions.
+
+        Costs only decrease, so h_max values only decrease, and an action's
+        value changes only when its chosen (costliest) precondition does.
+        """
         r = self.relaxed
-        pre, pre_of, adds = r.pre, r.pre_of, r.add
+        pre, adds = r.pre, r.add
         heap = []
         for a in cut:
             nc = dist[choice[a]] + costs[a]
@@ -79,14 +88,16 @@ class LMCut:
             c, f = pop(heap)
             if c > dist[f]:
                 continue
-            for a in pre_of[f]:
-                if choice[a] is None:
+            for a in chosen_by[f]:
+                if choice[a] != f:
                     continue
-                best, arg = -1.0, None
+                best, arg = -1.0, f
                 for p in pre[a]:
                     if dist[p] > best:
                         best, arg = dist[p], p
-                choice[a] = arg
+                if arg != f:
+                    choice[a] = arg
+                    chosen_by[arg].append(a)
                 nc = best + costs[a]
                 for q in adds[a]:
                     if nc < dist[q]:
@@ -96,9 +107,9 @@ class LMCut:
     def __call__(self, state) -> float:
         r = self.relaxed
         goal, n_facts = r.goal, r.n_facts
-        pre_of, adds, achievers = r.pre_of, r.add, self.achievers
+        adds, achievers = r.add, self.achievers
         costs = r.cost[:]
-        dist, choice = self._hmax(state, costs)
+        dist, choice, chosen_by = self._hmax(state, costs)
         if dist[goal] == INF:
             return INF
         roots = [*state, r.init_fact]
@@ -121,10 +132,10 @@ class LMCut:
             for f in roots:
                 reached[f] = 1
             stack = roots[:]
-            cut = []
+            cut = set()
             while stack:
                 f = stack.pop()
-                for a in pre_of[f]:
+                for a in chosen_by[f]:
                     if choice[a] != f:
                         continue
                     into_zone = False
@@ -135,10 +146,10 @@ class LMCut:
                             reached[q] = 1
                             stack.append(q)
                     if into_zone:
-                        cut.append(a)
+                        cut.add(a)
             m = min(costs[a] for a in cut)
             h += m
             for a in cut:
                 costs[a] -= m
-            self._lower(cut, costs, dist, choice)
+            self._lower(cut, costs, dist, choice, chosen_by)
         return h
