@@ -39,17 +39,24 @@ def start_problems(world, checker) -> list[tuple[str, str, str]]:
     return problems
 
 
-def check_start_state(scene, src=None) -> None:
-    """Raise a located SceneError for the first problem of the start state."""
-    from tampcli.geometry.collision import CollisionChecker
-    from tampcli.geometry.world import World
+def check_start_state(scene, src=None, world=None, checker=None) -> None:
+    """Raise a located SceneError for the first problem of the start state.
 
-    with World(scene) as world:
-        problems = start_problems(world, CollisionChecker(world))
-    if not problems:
-        return
-    key, subject, message = problems[0]
-    line = None
+    Builds a World and a CollisionChecker unless given them.
+    """
+    if world is None:
+        from tampcli.geometry.collision import CollisionChecker
+        from tampcli.geometry.world import World
+
+        with World(scene) as own:
+            problems = start_problems(own, CollisionChecker(own))
+    else:
+        problems = start_problems(world, checker)
+    if problems:
+        raise located_error(scene, src, *problems[0])
+
+
+def located_error(scene, src, key: str, subject: str, message: str) -> SceneError:
     if key == "objects.pose":
         index = next(i for i, b in enumerate(scene.bodies) if b.name == subject)
         line = src.line("objects", index, "pose") if src else scene.bodies[index].line
@@ -58,5 +65,5 @@ def check_start_state(scene, src=None) -> None:
     else:
         line = scene.robot.line
     text = src.text if src is not None else None
-    raise SceneError(message, path=scene.path, line=line, key=key,
-                     source_line=source_line_at(text, line) if text else None)
+    return SceneError(message, path=scene.path, line=line, key=key,
+                      source_line=source_line_at(text, line) if text else None)

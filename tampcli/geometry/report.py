@@ -1,0 +1,153 @@
+"""What `tampcli check` says about a problem's geometry: `scene_summary`.
+
+Loading refuses a bad scene (a SceneError, exit 2). A good one is
+summarized: robot and joint limits, bodies, regions, modes, the closest
+pairs of the start state, and warnings (goal regions the robot cannot
+reach, actions without a mode).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tampcli.geometry.collision import CollisionChecker
+from tampcli.geometry.modes import find_modes, load_modes
+from tampcli.geometry.scene import find_scene, load_scene
+from tampcli.geometry.startcheck import check_start_state
+from tampcli.geometry.tomlsrc import read_toml
+from tampcli.geometry.world import World
+from tampcli.pddl import ast
+
+PANDA_REACH = 0.855  # m, from the shoulder (joint 2) to the grasp target, arm stretched
+REPORT_DISTANCE = 0.05  # m: start-state pairs closer than this are listed
+
+
+def scene_summary(domain: ast.Domain, problem: ast.Problem, domain_path, problem_path,
+                  scene_path=None, modes_path=None) -> dict | None:
+    """A JSON-ready summary of the scene of `problem`, or None when it has none.
+
+    Raises SceneError (located) when the scene or modes file is bad.
+    """
+    scene_path = scene_path or find_scene(problem_path)
+    if scene_path is None:
+        return None
+    modes_path = modes_path or find_modes(domain_path)
+    modes = load_modes(modes_path, domain) if modes_path else None
+    scene = load_scene(scene_path, domain, problem, modes=modes, geometric=False)
+    warnings: list[str] = []
+    with World(scene) as world:
+        checker = CollisionChecker(world)
+        check_start_state(scene, read_toml(str(scene_path)), world, checker)
+        contacts = sorted(checker.distances(world.start, activation=REPORT_DISTANCE,
+                                            static=True), key=lambda c: c.distance)
+        warnings += _reach_warnings(world, scene, _goal_names(problem.goal))
+        robot = {
+            "model": scene.robot.model,
+            "base": [round(v, 6) for v in scene.robot.base[:3]],
+            "tool_link": world.tool_link,
+            "joints": list(world.joint_names),
+            "lower": _round(world.lower),
+            "upper": _round(world.upper),
+            "start": _round(world.start),
+        }
+        support = sorted(checker.support)
+        self_pairs = len(checker.self_pairs)
+    if modes is None:
+        warnings.append("no modes.toml beside the domain: every action is symbolic only")
+    else:
+        for name in modes.missing:
+            warnings.append(f"action {name!r} has no table in {modes.path}: it is symbolic "
+                            "only (mode \"none\")")
+    return {
+        "scene": str(scene_path),
+        "modes": str(modes_path) if modes_path else None,
+        "robot": robot,
+        "support": support,
+        "self_collision_pairs": self_pairs,
+        "bodies": [{"name": b.name, "shape": b.shape, "size": list(b.size),
+                    "pose": _round(b.pose), "fixed": b.fixed, "obstacle": b.obstacle}
+                   for b in scene.bodies],
+        "regions": [{"name": r.name, "on": r.on, "center": list(r.center),
+                     "size": list(r.size)} for r in scene.regions],
+        "action_modes": {name: mode.kind for name, mode in (modes.items() if modes else ())},
+        "start_contacts": [{"a": c.a, "b": c.b, "distance": round(c.distance, 5)}
+                           for c in contacts],
+        "warnings": warnings,
+    }
+
+
+def _round(values, digits: int = 6) -> list[float]:
+    return [round(float(v), digits) for v in values]
+
+
+def _goal_names(formula) -> set[str]:
+    """All object names in the atoms of a goal formula."""
+    names: set[str] = set()
+    stack = [formula]
+    while stack:
+        f = stack.pop()
+        if isinstance(f, ast.Atom):
+            names.update(a for a in f.args if not a.startswith("?"))
+        elif isinstance(f, ast.Not):
+            stack.append(f.part)
+        elif isinstance(f, ast.And | ast.Or):
+            stack.extend(f.parts)
+        elif isinstance(f, ast.Imply):
+            stack.extend((f.antecedent, f.consequent))
+        elif isinstance(f, ast.Exists | ast.Forall):
+            stack.append(f.body)
+    return names
+
+
+def _reach_warnings(world, scene, goal_names: set[str]) -> list[str]:
+    out = []
+    for region in scene.regions:
+        if region.name not in goal_names:
+            continue
+        support = scene.body(region.on)
+        top = support.matrix[2, 3] + _half_height(support)
+        lo, hi = region.lower, region.upper
+        if scene.robot.model == "planar":
+            inside = np.all(hi >= world.lower) and np.all(lo <= world.upper)
+            if not inside:
+                out.append(f"goal region {region.name!r} lies outside the planar robot's "
+                           f"workspace x, y in [{world.lower[0]:.2f}, {world.upper[0]:.2f}] x "
+                           f"[{world.lower[1]:.2f}, {world.upper[1]:.2f}]")
+            continue
+        shoulder, reach = _shoulder_and_reach(world)
+        nearest = np.array([np.clip(shoulder[0], lo[0], hi[0]),
+                            np.clip(shoulder[1], lo[1], hi[1]), top])
+        gap = float(np.linalg.norm(nearest - shoulder))
+        if gap > reach:
+            out.append(f"goal region {region.name!r} is {gap:.2f} m from the robot's shoulder, "
+                       f"beyond its reach of about {reach:.2f} m")
+    return out
+
+
+def _half_height(body) -> float:
+    if body.shape == "box":
+        return body.size[2] / 2
+    if body.shape == "cylinder":
+        return body.size[1] / 2
+    if body.shape == "sphere":
+        return body.size[0]
+    return 0.0
+
+
+def _shoulder_and_reach(world) -> tuple[np.ndarray, float]:
+    """Second joint's origin and the summed link lengths from it to the tool (cheap bound)."""
+    chain = world.chain
+    frames = chain.fk_list(world.start)
+    joints = [i for i, link in enumerate(chain.links) if link.q_index >= 0]
+    shoulder_link = joints[1] if len(joints) > 1 else joints[0]
+    shoulder = frames[shoulder_link][:3, 3]
+    if world.scene.robot.model == "panda":
+        return shoulder, PANDA_REACH
+    reach, i = 0.0, chain.index[world.tool_link]
+    while i > shoulder_link:
+        reach += float(np.linalg.norm(chain.links[i].origin[:3, 3]))
+        i = chain.links[i].parent
+    return shoulder, reach if reach > 0 else math.inf
+

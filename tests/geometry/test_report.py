@@ -1,0 +1,74 @@
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from tampcli.errors import SceneError
+from tampcli.geometry.report import scene_summary
+from tampcli.pddl import parser
+
+DATA = Path(__file__).parent / "data"
+
+
+def _load(dir_: Path):
+    return (parser.parse_domain_file(str(dir_ / "domain.pddl")),
+            parser.parse_problem_file(str(dir_ / "p01.pddl")))
+
+
+def test_summary_of_the_test_scene():
+    domain, problem = _load(DATA)
+    summary = scene_summary(domain, problem, DATA / "domain.pddl", DATA / "p01.pddl")
+    json.dumps(summary)  # JSON-ready
+    assert summary["robot"]["model"] == "panda" and len(summary["robot"]["joints"]) == 7
+    assert summary["robot"]["tool_link"] == "panda_grasptarget"
+    assert [b["name"] for b in summary["bodies"]] == ["table", "a", "b", "wall"]
+    assert summary["bodies"][3]["obstacle"] is True
+    assert summary["regions"][0]["name"] == "goal"
+    assert summary["action_modes"] == {"pick": "grasp", "place": "place", "wait": "none"}
+    assert summary["support"] == ["table"]
+    assert summary["warnings"] == []
+    # The cubes rest on the table: resting contact, reported at distance ~0, not refused.
+    rest = [c for c in summary["start_contacts"] if {c["a"], c["b"]} == {"body:a", "body:table"}]
+    assert not rest or abs(rest[0]["distance"]) < 1e-6
+
+
+def test_no_scene_gives_none(tmp_path):
+    domain, problem = _load(DATA)
+    shutil.copy(DATA / "p01.pddl", tmp_path / "p01.pddl")
+    assert scene_summary(domain, problem, tmp_path / "domain.pddl", tmp_path / "p01.pddl") is None
+
+
+def _copy_with(tmp_path, scene_text=None, modes_text=None) -> Path:
+    for name in ("domain.pddl", "p01.pddl", "p01.scene.toml", "modes.toml"):
+        shutil.copy(DATA / name, tmp_path / name)
+    if scene_text is not None:
+        (tmp_path / "p01.scene.toml").write_text(scene_text)
+    if modes_text is not None:
+        (tmp_path / "modes.toml").write_text(modes_text)
+    return tmp_path
+
+
+def test_warns_about_unreachable_goal_region_and_unmoded_action(tmp_path):
+    text = (DATA / "p01.scene.toml").read_text().replace(
+        'size = [1.2, 1.4, 0.04]\npose = [0.3, 0.0, -0.02]',
+        'size = [3.0, 3.0, 0.04]\npose = [0.3, 0.0, -0.02]').replace(
+        "center = [0.45, 0.25]", "center = [1.5, 1.2]")
+    modes = (DATA / "modes.toml").read_text().replace('[wait]\nmode = "none"\n', "")
+    d = _copy_with(tmp_path, text, modes)
+    domain, problem = _load(d)
+    summary = scene_summary(domain, problem, d / "domain.pddl", d / "p01.pddl")
+    assert any("goal region 'goal'" in w and "beyond its reach" in w for w in summary["warnings"])
+    assert any("'wait' has no table" in w for w in summary["warnings"])
+
+
+def test_refuses_a_start_in_collision(tmp_path):
+    text = (DATA / "p01.scene.toml").read_text() + (
+        '\n[[objects]]\nname = "crate"\nshape = "box"\nsize = [0.2, 0.2, 0.2]\n'
+        'pose = [0.3, 0.0, 0.45]\nfixed = true\n')
+    d = _copy_with(tmp_path, text)
+    domain, problem = _load(d)
+    with pytest.raises(SceneError) as info:
+        scene_summary(domain, problem, d / "domain.pddl", d / "p01.pddl")
+    assert info.value.key == "robot.start" and "in collision" in info.value.message
+    assert info.value.line == 5
