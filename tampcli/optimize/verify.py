@@ -228,27 +228,41 @@ class _Op:
 
 
 def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]:
-    """`verify` on a solution.json (scene and modes found as SPEC.md says)."""
+    """`verify` on a solution.json (scene and modes found as SPEC.md says).
+
+    `domain_path` / `problem_path` override the files the solution names; each
+    may also be an already parsed `ast.Domain` / `ast.Problem`.
+    """
     from tampcli import solution as solution_mod
     from tampcli.errors import SolutionFileError
     from tampcli.geometry import scene as scene_mod
     from tampcli.geometry.world import World
     from tampcli.optimize.problem import lower
     from tampcli.optimize.result import TrajectoryResult
-    from tampcli.pddl import parser
+    from tampcli.pddl import ast, parser
 
     sol = solution_mod.read(path)
-    domain_path = Path(domain_path) if domain_path else solution_mod.resolve_input(path,
-                                                                                  sol.domain)
-    problem_path = Path(problem_path) if problem_path else solution_mod.resolve_input(
-        path, sol.problem)
+    if sol.status != "solved":
+        return [f"the solution's status is {sol.status}: {sol.reason or 'no reason given'}"]
     scene_path = solution_mod.resolve_input(path, sol.scene)
     if scene_path is None:
         return []  # symbolic solution: nothing geometric to check
     if not scene_path.is_file():
         raise SolutionFileError(f"scene file not found: {scene_path}", str(path), key="scene")
-    domain = parser.parse_domain_file(str(domain_path))
-    problem_ast = parser.parse_problem_file(str(problem_path))
+    if isinstance(domain_path, ast.Domain):
+        domain = domain_path
+        domain_path = Path(domain.path) if domain.path else solution_mod.resolve_input(
+            path, sol.domain)
+    else:
+        domain_path = Path(domain_path) if domain_path else solution_mod.resolve_input(
+            path, sol.domain)
+        domain = parser.parse_domain_file(str(domain_path))
+    if isinstance(problem_path, ast.Problem):
+        problem_ast = problem_path
+    else:
+        problem_path = Path(problem_path) if problem_path else solution_mod.resolve_input(
+            path, sol.problem)
+        problem_ast = parser.parse_problem_file(str(problem_path))
     modes_path = solution_mod.resolve_input(path, sol.modes) if sol.modes else \
         scene_mod.find_modes(domain_path)
     modes = scene_mod.load_modes(modes_path, domain) if modes_path else {}
@@ -261,6 +275,4 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
         result = TrajectoryResult(
             "solved", "path", problem.names, trajectory=np.array(sol.trajectory, dtype=float),
             phases=sol.phases, object_poses=sol.objects)
-        if sol.status != "solved":
-            return [f"the solution's status is {sol.status}: {sol.reason or 'no reason given'}"]
         return verify(problem, result)

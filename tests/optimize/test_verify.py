@@ -10,7 +10,7 @@ from tampcli.optimize.problem import lower
 from tampcli.optimize.solve import solve
 from tampcli.optimize.verify import verify, verify_solution_file
 
-from .helpers import SCENES, domain_path, ops
+from .helpers import SCENES, domain_path, load, ops
 
 PLAN = ("(pick o start)", "(place o goal)")
 
@@ -41,7 +41,11 @@ def _write(tmp_path, problem, result, **changes):
 
 def test_solution_file_round_trip_is_valid(tmp_path, solved):
     problem, result = solved
-    assert verify_solution_file(_write(tmp_path, problem, result)) == []
+    path = _write(tmp_path, problem, result)
+    assert verify_solution_file(path) == []
+    # As `tampcli validate` calls it: with the parsed domain and problem.
+    domain, problem_ast, _, _ = load("planar")
+    assert verify_solution_file(path, domain, problem_ast) == []
 
 
 def test_a_waypoint_through_the_pillar_is_a_collision(tmp_path, solved):
