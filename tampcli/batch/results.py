@@ -51,19 +51,22 @@ class ResultsFile:
         self.repaired_bytes = 0
         if os.path.isdir(path):
             raise UsageError("is a folder; --out wants a file", path=path)
-        if os.path.exists(path):
-            if not resume and os.path.getsize(path) > 0:
-                raise UsageError("results file exists: pass --resume to continue it, or remove "
-                                 "it to start over", path=path, key="--out")
-            if resume:
-                self.repaired_bytes = _truncate_torn_tail(path)
-                self.records = read_results(path)
-        parent = os.path.dirname(os.path.abspath(path))
-        os.makedirs(parent, exist_ok=True)
+        if not resume and os.path.exists(path) and os.path.getsize(path) > 0:
+            raise UsageError("results file exists: pass --resume to continue it, or remove "
+                             "it to start over", path=path, key="--out")
+        os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
         try:
             self._fd = os.open(path, os.O_WRONLY | os.O_APPEND | os.O_CREAT, 0o644)
         except OSError as err:
             raise UsageError(f"cannot write: {err.strerror}", path=path, key="--out") from None
+        try:
+            _lock(self._fd, path)
+            if resume:
+                self.repaired_bytes = _truncate_torn_tail(path)
+                self.records = read_results(path)
+        except BaseException:
+            self.close()
+            raise
 
     def done(self) -> set[str]:
         """Absolute paths of the problems already recorded."""
@@ -90,6 +93,20 @@ class ResultsFile:
 
     def __exit__(self, *exc) -> None:
         self.close()
+
+
+def _lock(fd: int, path: str) -> None:
+    """One batch per results file: a second one would interleave and repeat work.
+    The lock dies with its process, even under SIGKILL."""
+    try:
+        import fcntl
+    except ImportError:  # not POSIX: no guard
+        return
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        raise UsageError("another batch is writing to this results file", path=path,
+                         key="--out") from None
 
 
 def read_results(path: str) -> list[dict[str, Any]]:

@@ -7,7 +7,10 @@ written as soon as it is known. The exit code is 0 whenever the batch ran.
 
 from __future__ import annotations
 
+import contextlib
 import os
+import signal
+import threading
 from collections import Counter
 
 from tampcli.batch.discover import discover
@@ -68,7 +71,8 @@ def run(args, ui) -> int:
         if len(todo) < len(jobs):
             ui.info(f"resuming {args.out}: {len(jobs) - len(todo)} of {len(jobs)} problems "
                     "already recorded")
-        with _Progress(ui, total=len(jobs), already=len(jobs) - len(todo)) as progress:
+        with _sigterm_interrupts(), \
+                _Progress(ui, total=len(jobs), already=len(jobs) - len(todo)) as progress:
 
             def on_result(result: Result) -> None:
                 results.append(result)
@@ -92,6 +96,24 @@ def run(args, ui) -> int:
     else:
         ui.print(table(summary, title=f"batch: {len(records)} problems -> {args.out}"))
     return ExitCode.OK
+
+
+@contextlib.contextmanager
+def _sigterm_interrupts():
+    """SIGTERM (`kill`, a cluster job's time limit) stops the batch as Ctrl-C
+    does: the running children are killed with their process groups."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGTERM, interrupt)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
 
 
 def _of_jobs(records: list[dict], jobs) -> list[dict]:

@@ -90,3 +90,13 @@ def test_a_bad_complete_line_is_bad_input_with_its_line_number(tmp_path):
 def test_out_that_is_a_folder_is_a_usage_error(tmp_path):
     with pytest.raises(UsageError, match="folder"):
         ResultsFile(str(tmp_path), resume=False)
+
+
+def test_a_second_batch_on_the_same_file_is_refused_until_the_first_closes(tmp_path):
+    out = tmp_path / "r.jsonl"
+    with ResultsFile(str(out), resume=True) as first:
+        first.append(_result("a.pddl"))
+        with pytest.raises(UsageError, match="another batch"):
+            ResultsFile(str(out), resume=True)
+    with ResultsFile(str(out), resume=True) as again:
+        assert again.done() == {os.path.abspath("a.pddl")}
