@@ -61,7 +61,13 @@ def run(args, ui) -> int:
         raise UsageError(f"must be at least 1, got {workers}", key="--jobs")
     jobs = discover(args.paths)
     if args.video_dir:
-        os.makedirs(args.video_dir, exist_ok=True)
+        try:
+            os.makedirs(args.video_dir, exist_ok=True)
+        except OSError as err:
+            raise UsageError(f"cannot create: {err.strerror}", path=args.video_dir,
+                             key="--video-dir") from None
+    if args.csv:
+        _check_writable(args.csv, "--csv")
     with ResultsFile(args.out, resume=args.resume) as results:
         if results.repaired_bytes:
             ui.warn(f"{args.out}: cut a torn last line ({results.repaired_bytes} bytes) left "
@@ -96,6 +102,17 @@ def run(args, ui) -> int:
     else:
         ui.print(table(summary, title=f"batch: {len(records)} problems -> {args.out}"))
     return ExitCode.OK
+
+
+def _check_writable(path: str, flag: str) -> None:
+    """Refuse an unwritable output before the batch runs, not after."""
+    folder = os.path.dirname(os.path.abspath(path))
+    if os.path.isdir(path):
+        raise UsageError("is a folder", path=path, key=flag)
+    if not os.path.isdir(folder):
+        raise UsageError("its folder does not exist", path=path, key=flag)
+    if not os.access(folder, os.W_OK) or (os.path.exists(path) and not os.access(path, os.W_OK)):
+        raise UsageError("not writable", path=path, key=flag)
 
 
 @contextlib.contextmanager

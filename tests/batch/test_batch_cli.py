@@ -159,6 +159,7 @@ def test_existing_results_without_resume_are_kept_and_refused(cli, tmp_path):
     ([str(GRIPPER_P01), "--time-limit", "-3"], "must be positive"),
     ([str(GRIPPER_P01), "--symbolic", "--video-dir", "v"], "videos need `solve`"),
     ([str(GRIPPER_P01), "--jobs", "many"], "invalid int value"),
+    ([str(GRIPPER_P01), "--csv", "no/such/folder/r.csv"], "its folder does not exist"),
 ])
 def test_bad_input_is_exit_2_without_traceback(cli, tmp_path, argv, message):
     run = cli("batch", *argv, "--out", tmp_path / "r.jsonl")
