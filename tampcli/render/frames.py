@@ -25,7 +25,7 @@ from tampcli.render.replay import FrameState
 from tampcli.render.scenery import add_regions
 
 CHUNK = 4  # frames per message: large enough to amortize pickling, small for memory
-QUEUE_DEPTH = 2  # chunks a worker may run ahead of the encoder
+QUEUE_DEPTH = 3  # chunks a worker may run ahead of the encoder
 _POLL_SECONDS = 1.0
 
 
@@ -119,28 +119,33 @@ def _render_here(job, states):
 
 
 def _render_in_workers(job, states, workers):
+    """Slot 0 is this process (one start-up fewer); slots 1.. are spawned."""
     chunks = [list(states[i:i + CHUNK]) for i in range(0, len(states), CHUNK)]
     # spawn, not fork: the parent may hold a PyBullet client and a progress thread.
     ctx = multiprocessing.get_context("spawn")
-    queues = [ctx.Queue(maxsize=QUEUE_DEPTH) for _ in range(workers)]
-    processes = [
-        ctx.Process(target=_worker, args=(job, chunks[w::workers], queues[w]), daemon=True,
-                    name=f"tampcli-render-{w}")
-        for w in range(workers)]
+    queues = {w: ctx.Queue(maxsize=QUEUE_DEPTH) for w in range(1, workers)}
+    processes = {
+        w: ctx.Process(target=_worker, args=(job, chunks[w::workers], queues[w]), daemon=True,
+                       name=f"tampcli-render-{w}")
+        for w in range(1, workers)}
     try:
-        for process in processes:
+        for process in processes.values():
             process.start()
-        for c in range(len(chunks)):
-            w = c % workers
-            yield from _receive(queues[w], processes[w])
-        for process in processes:
+        with frame_renderer(job) as renderer:
+            for c, chunk in enumerate(chunks):
+                w = c % workers
+                if w == 0:
+                    yield from (renderer.render(state) for state in chunk)
+                else:
+                    yield from _receive(queues[w], processes[w])
+        for process in processes.values():
             process.join(timeout=10)
     finally:
-        for process in processes:
+        for process in processes.values():
             if process.is_alive():
                 process.terminate()
             process.join(timeout=5)
-        for q in queues:
+        for q in queues.values():
             q.close()
             q.cancel_join_thread()
 

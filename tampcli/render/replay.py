@@ -103,27 +103,23 @@ class Replay:
         return grasp
 
     def _finger_states(self) -> tuple[list[bool], list[bool]]:
-        """Closed before/after each phase: a carrying motion closes them; an
-        instantaneous action switches to what the next motion (or its mode) needs."""
+        """Closed before/after each phase. A carrying motion closes them, a free
+        one opens them; a push or a move action keeps them as they were; an
+        instantaneous action switches them by its mode, or, mode unknown, by its
+        `attached` (the object held once it is done, as the optimizer writes it)."""
         before, after = [], []
         closed = False
-        for k, phase in enumerate(self.phases):
+        for phase in self.phases:
+            before.append(closed)
             if phase.action is None:
                 closed = phase.attached is not None
-                before.append(closed)
-                after.append(closed)
-                continue
-            before.append(closed)
-            if phase.start == phase.end:
+                before[-1] = closed
+            elif phase.start == phase.end:
                 kind = self._mode_kind(phase.action)
-                if kind == "grasp":
-                    closed = True
-                elif kind == "place":
-                    closed = False
-                else:
-                    following = next((p for p in self.phases[k + 1:] if p.action is None), None)
-                    if following is not None:
-                        closed = following.attached is not None
+                if kind in ("grasp", "place"):
+                    closed = kind == "grasp"
+                elif kind is None:
+                    closed = phase.attached is not None
             after.append(closed)
         return before, after
 
@@ -231,11 +227,13 @@ class Replay:
             poses, closed = self._resting(k), self._closed_before[k]
             if k in self._grasp:
                 poses[phase.attached] = self._tool_pose(q) @ self._grasp[k]
-        held = None
+        # Held in a grasp (fingers closed), as opposed to pushed along.
+        held = phase.attached if phase.attached is not None and self._closed_before[k] and \
+            not after and self._mode_kind(phase.action or "") != "push" else None
         if phase.action is not None:
             label = phase.action
         elif phase.attached is not None:
-            label, held = f"carry {phase.attached}", phase.attached
+            label = f"carry {phase.attached}"
         else:
             label = "move"
         return FrameState(t, tuple(q), poses, closed, label, self._step[k], self.steps, held)

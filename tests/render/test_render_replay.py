@@ -126,3 +126,31 @@ def test_speed_and_duration_options(panda):
     fast = Replay(sol, world.tool_pose, speed=1.0, pause=0.0)
     assert slow.duration == pytest.approx(2 * fast.duration)
     assert Replay(sol, world.tool_pose, duration=4.0, pause=0.0).duration == pytest.approx(4.0)
+
+
+def _edit(sol, **changes):
+    from tampcli.solution import Solution
+
+    return Solution(**{**sol.__dict__, **changes})
+
+
+def test_a_move_action_that_carries_holds_the_object(panda):
+    from tampcli.solution import Phase
+
+    sol, world = panda
+    phases = list(sol.phases)
+    carry = phases[2]
+    phases[2] = Phase("(goto goal)", carry.start, carry.end, "a")
+    replay = Replay(_edit(sol, phases=tuple(phases)), world.tool_pose, duration=2.0)
+    going = [s for s in replay.states(20) if s.label == "(goto goal)"]
+    assert len(going) > 5 and all(s.held == "a" and s.fingers_closed for s in going)
+
+
+def test_ending_on_an_instantaneous_action(panda):
+    sol, world = panda
+    end = sol.phases[3].end  # the place
+    cut = _edit(sol, phases=sol.phases[:4], trajectory=sol.trajectory[:end + 1],
+                objects={k: v[:5] for k, v in sol.objects.items()})
+    replay = Replay(cut, world.tool_pose, duration=2.0)
+    assert not replay.state_at(replay.duration).fingers_closed
+    assert any(s.fingers_closed for s in replay.states(10))

@@ -203,3 +203,26 @@ def test_progress_bar_on_a_terminal(planar_json, tmp_path):
     report = render_solution(planar_json, tmp_path / "v.gif", RenderOptions(**SMALL), ui=ui)
     assert report["frames"] > 0
     assert "rendering v.gif" in err.getvalue() and "\x1b[" in err.getvalue()
+
+
+def test_a_worker_that_dies_is_an_error_not_a_hang(panda_json):
+    import multiprocessing
+    import os
+    import signal
+
+    from tampcli.render.frames import FrameJob, render_frames
+    from tampcli.render.inputs import load_inputs
+    from tampcli.render.video import _plan
+
+    inputs = load_inputs(panda_json)
+    replay, camera = _plan(inputs, RenderOptions(**{**SMALL, "pause": 0.0}))
+    states = replay.states(60)
+    assert len(states) > 60
+    frames = render_frames(FrameJob(inputs.scene, camera, 32, 24), states, workers=2)
+    next(frames)
+    (worker,) = [p for p in multiprocessing.active_children() if p.name.startswith("tampcli")]
+    os.kill(worker.pid, signal.SIGKILL)
+    with pytest.raises(RuntimeError, match="died"):
+        for _ in frames:
+            pass
+    assert not [p for p in multiprocessing.active_children() if p.name.startswith("tampcli")]
