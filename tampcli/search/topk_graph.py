@@ -42,7 +42,8 @@ class BoundedGraph:
         self.g: list[float] = []
         self.h: list[float | None] = []
         self.hlow: list[float] = []  # best admissible bound known before evaluating h
-        self._landmarks: dict[int, list] = {}  # of evaluated states not yet expanded
+        self._landmarks: dict[int, tuple] = {}  # of evaluated states not yet expanded
+        self._partial: dict[int, tuple] = {}  # LM-cut stopped at a budget, to resume
         self._with_landmarks = getattr(heuristic, "landmarks", None)
         # per state, (op index, successor id) of every applicable op once expanded
         self.succ: list[tuple[tuple[int, int], ...] | None] = []
@@ -104,11 +105,12 @@ class BoundedGraph:
                 if g + self.hlow[sid] > key:  # a better bound arrived since it was queued
                     self._requeue(g + self.hlow[sid], g, sid)
                     continue
-                h = self.h[sid] = self._evaluate(sid)
-                if g + h > key:  # the lazy bound was loose: queue with the true one
+                h = self._evaluate(sid, bound - g)
+                if g + h > key:  # the lazy bound was loose: queue with a better one
                     if h < INF:
                         self._requeue(g + h, g, sid)
                     continue
+                h = self.h[sid]
             succ = self.succ[sid]
             if succ is None:
                 self.expansions += 1
@@ -128,18 +130,30 @@ class BoundedGraph:
         self.seq += 1
         heapq.heappush(self.open, (key, g, self.seq, sid))
 
-    def _evaluate(self, sid: int) -> float:
+    def _evaluate(self, sid: int, budget: float) -> float:
+        """h of the state, or only a bound above `budget` when that is cheaper.
+
+        Sets self.h[sid] when the value is exact, else raises self.hlow[sid].
+        """
         self.evaluations += 1
         if self.evaluations % 64 == 0:
             self.check_time()
         state = self.states[sid]
         if self._with_landmarks is None:
-            value = self.heuristic(state)
+            value, complete = self.heuristic(state), True
         else:
-            value, found = self._with_landmarks(state)
-            if found:
+            value, found, rest = self._with_landmarks(state, budget, self._partial.pop(sid, None))
+            complete = rest is None
+            if not complete:
+                self._partial[sid] = rest
+            elif found:
                 self._landmarks[sid] = (value, found)
-        return max(value, self.hlow[sid])  # both admissible: keep the larger
+        value = max(value, self.hlow[sid])  # both admissible: keep the larger
+        if complete:
+            self.h[sid] = value
+        else:
+            self.hlow[sid] = value
+        return value
 
     def _child_bounds(self, sid: int, h: float):
         """op index -> admissible bound on the h of the successor by that op."""

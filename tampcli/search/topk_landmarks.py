@@ -5,39 +5,68 @@ costs m_1..m_n, such that no operator is charged more than its cost in all
 the landmarks containing it. If an operator o is not in L_i, every plan from
 s' = s[o] is, after o, a plan from s, so it uses an operator of L_i: L_i is
 still a landmark of s'. Hence sum(m_i for L_i not containing o) is an
-admissible value for s' (Pommerening & Helmert's path-dependent LM-cut
-bound), known without running LM-cut on s'. The bounded exploration queues
-successors with it and runs LM-cut only on the states it cannot prune.
+admissible value for s' (the path-dependent LM-cut bound), known without
+running LM-cut on s'. The bounded exploration queues successors with it and
+runs LM-cut only on the states it cannot prune; and it stops LM-cut early
+once the value passes what matters (`budget`): every partial sum of the
+landmark costs is admissible too.
 
 Only for tasks without conditional effects (as LM-cut itself): then each
-operator has at most one relaxed action, so charges per relaxed action are
-charges per operator.
+operator has at most one relaxed action, so a charge per relaxed action is a
+charge per operator. Kept apart from `heuristics.lmcut` (same algorithm, own
+code) because the search needs the landmarks and the budget, not only h.
 """
 
 from __future__ import annotations
 
-from tampcli.search.heuristics.lmcut import LMCut
-from tampcli.search.heuristics.relaxed import INF
+import heapq
+
+from tampcli.errors import UnsupportedFeatureError
+from tampcli.search.heuristics.relaxed import INF, RelaxedTask
+from tampcli.task.task import Task
 
 
-class LandmarkCut(LMCut):
+class LandmarkCut:
+    admissible = True
+
+    def __init__(self, task: Task):
+        for op in task.operators:
+            if op.cond_effects:
+                raise UnsupportedFeatureError(
+                    f"LM-cut does not support conditional effects (operator {op.name})")
+        self.relaxed = r = RelaxedTask(task, init_fact=True)
+        self.achievers: list[list[int]] = [[] for _ in range(r.n_facts)]
+        for a, adds in enumerate(r.add):
+            for q in adds:
+                self.achievers[q].append(a)
+
     def __call__(self, state) -> float:
         return self.landmarks(state)[0]
 
-    def landmarks(self, state) -> tuple[float, list[tuple[float, frozenset[int]]]]:
-        """(h, [(cost, operator indices of the landmark), ...]) for `state`."""
+    def landmarks(self, state, budget: float = INF, resume=None):
+        """(h, [(cost, operator indices of the landmark), ...], rest) for `state`.
+
+        Stops as soon as h exceeds `budget`; `rest` is then a token that
+        `resume` takes to go on from there later with a larger budget, and
+        None when h is complete.
+        """
         r = self.relaxed
-        goal, n_facts = r.goal, r.n_facts
-        pre_of, adds, achievers, op_of = r.pre_of, r.add, self.achievers, r.op
-        costs = r.cost[:]
-        dist, choice = self._hmax(state, costs)
-        if dist[goal] == INF:
-            return INF, []
+        goal, n_facts, adds, achievers, op_of = r.goal, r.n_facts, r.add, self.achievers, r.op
+        if resume is None:
+            costs = r.cost[:]
+            dist, choice, chosen_by = self._hmax(state, costs)
+            if dist[goal] == INF:
+                return INF, [], None
+            h, found = 0.0, []
+            if dist[goal] > budget:  # h_max alone is enough
+                return dist[goal], found, (costs, dist, choice, chosen_by, h, found)
+        else:
+            costs, dist, choice, chosen_by, h, found = resume
+            if h + dist[goal] > budget:
+                return h + dist[goal], found, resume
         roots = [*state, r.init_fact]
-        h = 0.0
-        found: list[tuple[float, frozenset[int]]] = []
         while dist[goal] > 0.0:
-            # the goal zone: facts reaching the goal through zero-cost actions
+            # the goal zone: facts that reach the goal through zero-cost actions
             zone = bytearray(n_facts)
             zone[goal] = 1
             stack = [goal]
@@ -54,10 +83,10 @@ class LandmarkCut(LMCut):
             for f in roots:
                 reached[f] = 1
             stack = roots[:]
-            cut = []
+            cut = set()
             while stack:
                 f = stack.pop()
-                for a in pre_of[f]:
+                for a in chosen_by[f]:
                     if choice[a] != f:
                         continue
                     into = False
@@ -68,11 +97,81 @@ class LandmarkCut(LMCut):
                             reached[q] = 1
                             stack.append(q)
                     if into:
-                        cut.append(a)
+                        cut.add(a)
             m = min(costs[a] for a in cut)
             h += m
             found.append((m, frozenset(op_of[a] for a in cut)))
             for a in cut:
                 costs[a] -= m
-            self._lower(cut, costs, dist, choice)
-        return h, found
+            self._lower(cut, costs, dist, choice, chosen_by)
+            if h + dist[goal] > budget and dist[goal] > 0.0:
+                # h + the remaining h_max is admissible too (a cost partition)
+                return h + dist[goal], found, (costs, dist, choice, chosen_by, h, found)
+        return h, found, None
+
+    def _hmax(self, state, costs):
+        """h_max per fact; per action its costliest precondition; per fact the
+        actions that chose it (stale entries possible: check `choice`)."""
+        r = self.relaxed
+        pre_of, adds = r.pre_of, r.add
+        unsat = r.pre_count[:]
+        dist = [INF] * r.n_facts
+        choice: list = [None] * r.n_actions
+        chosen_by: list[list[int]] = [[] for _ in range(r.n_facts)]
+        heap = [(0.0, f) for f in (*state, r.init_fact)]
+        for _, f in heap:
+            dist[f] = 0.0
+        heapq.heapify(heap)
+        push, pop = heapq.heappush, heapq.heappop
+        while heap:
+            c, f = pop(heap)
+            if c > dist[f]:
+                continue
+            for a in pre_of[f]:
+                left = unsat[a] - 1
+                unsat[a] = left
+                if left == 0:  # facts settle in cost order: f is the costliest precondition
+                    choice[a] = f
+                    chosen_by[f].append(a)
+                    nc = c + costs[a]
+                    for q in adds[a]:
+                        if nc < dist[q]:
+                            dist[q] = nc
+                            push(heap, (nc, q))
+        return dist, choice, chosen_by
+
+    def _lower(self, cut, costs, dist, choice, chosen_by) -> None:
+        """Propagate the h_max decreases after the cut actions got cheaper.
+
+        Costs only decrease, so values only decrease, and an action's value
+        changes only through its chosen precondition.
+        """
+        pre, adds = self.relaxed.pre, self.relaxed.add
+        heap = []
+        for a in cut:
+            nc = dist[choice[a]] + costs[a]
+            for q in adds[a]:
+                if nc < dist[q]:
+                    dist[q] = nc
+                    heap.append((nc, q))
+        heapq.heapify(heap)
+        push, pop = heapq.heappush, heapq.heappop
+        while heap:
+            c, f = pop(heap)
+            if c > dist[f]:
+                continue
+            for a in chosen_by[f]:
+                if choice[a] != f:
+                    continue
+                best, arg = -1.0, f
+                for p in pre[a]:
+                    if dist[p] > best:
+                        best, arg = dist[p], p
+                if arg != f:
+                    choice[a] = arg
+                    chosen_by[arg].append(a)
+                nc = best + costs[a]
+                for q in adds[a]:
+                    if nc < dist[q]:
+                        dist[q] = nc
+                        push(heap, (nc, q))
