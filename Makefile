@@ -16,9 +16,17 @@ $(STAMP): pyproject.toml
 	$(BIN)/pip install -q -e '.[dev]'
 	touch $(STAMP)
 
+DEMO_DOMAIN := domains/arm-pick-place/domain.pddl
+DEMO_PROBLEM := problems/arm-pick-place/p02.pddl
+
 demo: install
 	$(BIN)/tampcli check domains/blocksworld/domain.pddl problems/blocksworld/p01.pddl
 	$(BIN)/tampcli plan domains/blocksworld/domain.pddl problems/blocksworld/p01.pddl -k 3
+	$(BIN)/tampcli check $(DEMO_DOMAIN) $(DEMO_PROBLEM)
+	mkdir -p out
+	$(BIN)/tampcli solve $(DEMO_DOMAIN) $(DEMO_PROBLEM) --out out/demo.solution.json --video out/demo.mp4
+	$(BIN)/tampcli validate $(DEMO_DOMAIN) $(DEMO_PROBLEM) out/demo.solution.json
+	@echo "video: $(CURDIR)/out/demo.mp4"
 
 test: install
 	$(BIN)/python -m pytest -q

@@ -41,6 +41,11 @@ def run(args, ui) -> int:
     if args.skeletons < 1 or args.time_limit <= 0 or args.symbolic_weight < 0:
         raise UsageError("-k must be >= 1, --time-limit > 0, --symbolic-weight >= 0",
                          "tampcli solve")
+    if args.video:  # refuse a bad video path before minutes of solving
+        from tampcli.render.video import check_writable, video_format
+
+        video_format(args.video, 640, 480)
+        check_writable(args.video, "--video")
     view = _LiveView(ui)
     with view:
         sol = solve(args.domain, args.problem, args.scene, args.modes, options, view.on_event)
