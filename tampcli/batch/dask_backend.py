@@ -13,7 +13,7 @@ from collections.abc import Callable, Iterable
 
 from tampcli.batch.discover import Job
 from tampcli.batch.results import Result
-from tampcli.batch.runner import RunOptions, run_job
+from tampcli.batch.runner import PROG, RunOptions, run_job
 from tampcli.errors import UsageError
 
 CONNECT_TIMEOUT_S = 10
@@ -25,12 +25,23 @@ def run_on_cluster(address: str, jobs: Iterable[Job], options: RunOptions,
         from distributed import Client, as_completed
     except ImportError:
         raise UsageError("needs Dask distributed, which is not installed: "
-                         "pip install 'tampcli[cluster]'", key="--scheduler") from None
+                         "pip install 'tampcli[cluster]'", path=PROG,
+                         key="--scheduler") from None
+    from distributed.comm import parse_address
+    from distributed.comm.registry import get_backend
+
+    try:
+        # Checked before connecting: a Client that failed on a bad scheme
+        # stalls the exit of the process for 20 s while it is collected.
+        get_backend(parse_address(address)[0])
+    except ValueError as err:
+        raise UsageError(f"not a Dask scheduler address: {err}", path=PROG,
+                         key="--scheduler") from None
     try:
         client = Client(address, timeout=CONNECT_TIMEOUT_S, set_as_default=False)
     except (OSError, TimeoutError, ValueError) as err:
         raise UsageError(f"cannot connect to the Dask scheduler at {address!r}: {err}",
-                         key="--scheduler") from None
+                         path=PROG, key="--scheduler") from None
     with client:
         futures = {}
         for job in jobs:

@@ -28,6 +28,7 @@ from tampcli.batch.results import Result
 from tampcli.errors import UsageError
 
 _POLL_S = 0.05
+PROG = "tampcli batch"  # where a bad flag is reported, as argparse does
 
 
 @dataclass(frozen=True)
@@ -49,14 +50,17 @@ class RunOptions:
 
     def __post_init__(self):
         if self.time_limit is not None and not self.time_limit > 0:
-            raise UsageError(f"must be positive, got {self.time_limit}", key="--time-limit")
+            raise UsageError(f"must be positive, got {self.time_limit}", path=PROG,
+                             key="--time-limit")
         if not self.grace >= 0:
-            raise UsageError(f"must be zero or positive, got {self.grace}", key="--grace")
+            raise UsageError(f"must be zero or positive, got {self.grace}", path=PROG,
+                             key="--grace")
         if self.memory_mb is not None and self.memory_mb <= 0:
-            raise UsageError(f"must be positive, got {self.memory_mb}", key="--memory-limit")
+            raise UsageError(f"must be positive, got {self.memory_mb}", path=PROG,
+                             key="--memory-limit")
         if self.video_dir is not None and self.symbolic:
             raise UsageError("videos need `solve`: drop --symbolic or --video-dir",
-                             key="--video-dir")
+                             path=PROG, key="--video-dir")
 
     @property
     def kill_after(self) -> float | None:

@@ -15,7 +15,7 @@ from collections import Counter
 
 from tampcli.batch.discover import discover
 from tampcli.batch.results import STATUSES, Result, ResultsFile
-from tampcli.batch.runner import RunOptions
+from tampcli.batch.runner import PROG, RunOptions
 from tampcli.batch.summary import summarize, table, write_csv
 from tampcli.errors import ExitCode, UsageError
 
@@ -58,7 +58,7 @@ def run(args, ui) -> int:
                          video_dir=args.video_dir)
     workers = args.jobs if args.jobs is not None else (os.cpu_count() or 1)
     if workers < 1:
-        raise UsageError(f"must be at least 1, got {workers}", key="--jobs")
+        raise UsageError(f"must be at least 1, got {workers}", path=PROG, key="--jobs")
     jobs = discover(args.paths)
     if args.video_dir:
         try:

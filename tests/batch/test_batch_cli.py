@@ -195,6 +195,14 @@ def test_dask_cluster_gives_the_same_statuses_as_local(cli, failing_set, tmp_pat
         assert len(_lines(out)) == 4
 
 
+def test_bad_scheduler_address_is_a_usage_error(cli, tmp_path):
+    pytest.importorskip("distributed")
+    run = cli("batch", GRIPPER_P01, "--symbolic", "--scheduler", "nonsense://x",
+              "--out", tmp_path / "r.jsonl")
+    assert run.code == 2
+    assert "tampcli batch: --scheduler: not a Dask scheduler address" in run.err
+
+
 def test_missing_dask_is_a_clear_usage_error(tmp_path):
     code = (
         "import sys; sys.modules['distributed'] = None\n"
