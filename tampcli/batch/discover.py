@@ -49,11 +49,8 @@ def discover(paths: list[str]) -> list[Job]:
     for given in paths:
         path = Path(given)
         if path.is_dir():
-            try:
-                found = [p for p in path.rglob("*.pddl") if p.is_file()]
-            except OSError as err:
-                raise UsageError(f"cannot read folder: {err.strerror}", path=given) from None
-            problems.extend(p for p in sorted(found, key=natural_key) if not is_domain_file(p))
+            found = sorted(_pddl_files(path), key=natural_key)
+            problems.extend(p for p in found if not is_domain_file(p))
         elif path.is_file():
             if not os.access(path, os.R_OK):
                 raise UsageError("cannot read file: permission denied", path=given)
@@ -77,6 +74,20 @@ def discover(paths: list[str]) -> list[Job]:
         raise UsageError("no problem files found (a problem is a *.pddl file that is not a "
                          "domain file)", path=" ".join(paths) or None)
     return jobs
+
+
+def _pddl_files(folder: Path) -> list[Path]:
+    """*.pddl under `folder`, skipping hidden folders (.git, .venv: a virtualenv
+    may hold the PDDL test files of installed planners)."""
+
+    def unreadable(err: OSError):
+        raise UsageError(f"cannot read folder: {err.strerror}", path=err.filename)
+
+    found = []
+    for root, dirs, files in os.walk(folder, onerror=unreadable):
+        dirs[:] = [d for d in dirs if not d.startswith(".")]
+        found.extend(Path(root) / f for f in files if f.lower().endswith(".pddl"))
+    return [p for p in found if p.is_file()]
 
 
 def domain_label(domain: str | None, problem: str) -> str:

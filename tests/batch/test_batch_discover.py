@@ -98,3 +98,12 @@ def test_missing_path_and_empty_folder_are_usage_errors(tmp_path):
     shutil.copy(GRIPPER_DOMAIN, tmp_path / "empty" / "domain.pddl")
     with pytest.raises(UsageError, match="no problem files found"):
         discover([str(tmp_path / "empty")])
+
+
+def test_hidden_folders_are_not_searched(tmp_path):
+    (tmp_path / ".venv" / "pkg").mkdir(parents=True)
+    shutil.copy(GRIPPER_DOMAIN, tmp_path / "domain.pddl")
+    shutil.copy(GRIPPER_P01, tmp_path / ".venv" / "pkg" / "p.pddl")
+    shutil.copy(GRIPPER_P01, tmp_path / "P1.PDDL")
+    jobs = discover([str(tmp_path)])
+    assert [Path(job.problem).name for job in jobs] == ["P1.PDDL"]
