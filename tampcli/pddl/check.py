@@ -231,7 +231,8 @@ class _DomainChecker:
 
     def _args(self, name, params, args, span, scope, objects, src, what) -> None:
         if len(args) != len(params):
-            signature = "".join(f" {p.name} - {_type_text(p.types)}" for p in params)
+            signature = "".join(f" {p.name}" + ("" if p.types == (OBJECT,) else
+                                                 f" - {_type_text(p.types)}") for p in params)
             plural = "" if len(params) == 1 else "s"
             raise src.error(f"{what} {name} takes {len(params)} argument{plural}, found "
                             f"{len(args)}; declared as ({name}{signature})", span,

@@ -94,7 +94,8 @@ def read_file(path: str | Path) -> str:
     except UnicodeDecodeError as err:
         line = data[: err.start].count(b"\n") + 1
         return_col = err.start - (data.rfind(b"\n", 0, err.start) + 1) + 1
-        raise InputError("not UTF-8 text", str(path), line, return_col) from None
+        shown = source_line_at(data.decode("utf-8", "replace"), line)
+        raise InputError("not UTF-8 text", str(path), line, return_col, shown) from None
 
 
 def parse_domain_file(path: str | Path) -> ast.Domain:
@@ -133,7 +134,10 @@ def _describe_found(err: UnexpectedInput, text: str) -> str:
     if isinstance(err, UnexpectedToken):
         if err.token.type == "$END":
             return "end of file"
-        return f'"{err.token}"'
+        token = err.token
+        if token.start_pos is not None and token.end_pos is not None:
+            return f'"{text[token.start_pos:token.end_pos]}"'  # as written, not lower-cased
+        return f'"{token}"'
     if isinstance(err, UnexpectedCharacters):
         return f'"{text[err.pos_in_stream]}"'
     return "end of file"
@@ -155,7 +159,10 @@ def _syntax_error(err: UnexpectedInput, text: str, path: str | None) -> InputErr
         expected = err.allowed or ()
     found = _describe_found(err, text)
     described = tuple(sorted({_describe_terminal(t) for t in expected}))
-    return PDDLSyntaxError(f"unexpected {found}", path, err.line, err.column,
+    message = f"unexpected {found}"
+    if set(expected) == {"$END"}:
+        message += ' after the end of the definition (a ")" too many before it?)'
+    return PDDLSyntaxError(message, path, err.line, err.column,
                            source_line_at(text, err.line), described)
 
 

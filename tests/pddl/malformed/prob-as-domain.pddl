@@ -1,0 +1,5 @@
+(define (problem p1)
+  (:domain depots)
+  (:objects t1 - truck)
+  (:init)
+  (:goal (and)))

@@ -1,0 +1,7 @@
+(define (problem p1)
+  (:domain depots)
+  (:objects t1 - truck
+            a b - place)
+  (:init (at t1 a) (road a b))
+  (:goal (and (at t1 b)
+              (at t2 depot))))

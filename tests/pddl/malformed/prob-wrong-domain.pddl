@@ -1,0 +1,5 @@
+(define (problem p1)
+  (:domain logistics)
+  (:objects t1 - truck)
+  (:init)
+  (:goal (at t1 depot)))

@@ -1,0 +1,5 @@
+(define (domain d)
+  (:predicates (p))
+  (:action a :parameters () :effect (p))
+  (:action b :parameters () :effect (not (p)))
+  (:action a :parameters () :effect (not (p))))

@@ -1,0 +1,4 @@
+(define (domain d)
+  (:requirements :typing)
+  (:types block table
+          block))

@@ -1,0 +1,3 @@
+(define (domain d)
+  (:predicates (p ?x))
+  (:action :parameters (?x) :effect (p ?x)))

@@ -1,0 +1,5 @@
+(define (domain d)
+  (:predicates (p ?x))
+  (:action a
+    :effect (p ?x)
+    :parameters (?x)))

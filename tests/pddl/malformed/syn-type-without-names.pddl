@@ -1,0 +1,3 @@
+(define (domain d)
+  (:requirements :typing)
+  (:types - block))

@@ -1,0 +1,5 @@
+(define (domain d)
+  (:predicates (p ?x))
+  (:action a
+    :parameters (?x)
+    :effect (p ?x))

@@ -1,0 +1,5 @@
+(define (domain d)
+  (:requirements :numeric-fluents)
+  (:functions (fuel))
+  (:action a :parameters ()
+    :effect (decrease (fuel) 1)))

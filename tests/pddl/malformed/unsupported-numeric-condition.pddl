@@ -1,0 +1,6 @@
+(define (domain d)
+  (:requirements :numeric-fluents)
+  (:functions (fuel))
+  (:action a :parameters ()
+    :precondition (> (fuel) 1)
+    :effect (and)))
