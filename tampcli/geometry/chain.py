@@ -79,6 +79,8 @@ class Chain:
                 self.joint_axis[link.q_index] = link.axis
         self.revolute = self.joint_type == REVOLUTE
         self._has_prismatic = bool(np.any(~self.revolute))
+        self.moved_mask = self.moved_by.astype(float)
+        self._joint_links = [int(i) for i in self.joint_link]
 
     def fk_list(self, q) -> list[np.ndarray]:
         """World 4x4 frames of all links, in `names` order."""
@@ -96,13 +98,27 @@ class Chain:
 
     def joint_axes(self, frames) -> tuple[np.ndarray, np.ndarray]:
         """World axes (n, 3) and origins (n, 3) of the q joints, for a set of frames."""
-        axes = np.empty((self.n, 3))
-        origins = np.empty((self.n, 3))
-        for qi in range(self.n):
-            frame = frames[self.joint_link[qi]]
-            axes[qi] = frame[:3, :3] @ self.joint_axis[qi]
-            origins[qi] = frame[:3, 3]
-        return axes, origins
+        stacked = np.array([frames[i] for i in self._joint_links])
+        axes = np.einsum("nij,nj->ni", stacked[:, :3, :3], self.joint_axis)
+        return axes, stacked[:, :3, 3]
+
+    def normal_gradient_basis(self, frames) -> np.ndarray:
+        """(n, 6) B such that n . J(p) = B @ [p x n, n] for a point p on a moved link.
+
+        Revolute: n . (a x (p - o)) = a . (p x n) + (o x a) . n; prismatic: a . n.
+        """
+        axes, o = self.joint_axes(frames)
+        a = axes
+        basis = np.zeros((self.n, 6))
+        basis[:, :3] = a
+        basis[:, 3] = o[:, 1] * a[:, 2] - o[:, 2] * a[:, 1]
+        basis[:, 4] = o[:, 2] * a[:, 0] - o[:, 0] * a[:, 2]
+        basis[:, 5] = o[:, 0] * a[:, 1] - o[:, 1] * a[:, 0]
+        if self._has_prismatic:
+            slide = ~self.revolute
+            basis[slide, 3:] = a[slide]
+            basis[slide, :3] = 0.0
+        return basis
 
     def point_jacobian(self, axes, origins, link: int, point) -> np.ndarray:
         """(3, n) d point / d q for a world point rigidly attached to `link`.

@@ -32,14 +32,16 @@ import fcl
 import numpy as np
 
 from tampcli.geometry import transforms
-from tampcli.geometry.narrow import Placed, overlap, signed_distance
+from tampcli.geometry.narrow import Placed, separation_bound, signed_distance
 from tampcli.geometry.parts import (
     Part,
     body_shapes,
+    box_gaps,
     fcl_object,
     find_support,
     rigid_groups,
     robot_parts,
+    world_boxes,
 )
 from tampcli.geometry.scene import PANDA_READY
 
@@ -62,11 +64,12 @@ class _Query:
 
     __slots__ = ("frames", "chain", "_axes", "_placed")
 
-    def __init__(self, chain, q):
+    def __init__(self, chain, q, static_placed: dict | None = None):
         self.chain = chain
         self.frames = chain.fk_list(q)
         self._axes = None
-        self._placed: dict = {}
+        # Bodies at their start pose are placed once per checker, not per query.
+        self._placed: dict = dict(static_placed) if static_placed else {}
 
     def placed(self, key, part: Part, pose: np.ndarray | None) -> Placed:
         found = self._placed.get(key)
@@ -81,21 +84,11 @@ class _Query:
     def normal_gradient(self, link: int, point, normal) -> np.ndarray:
         """normal . d point / d q for a point attached to chain link `link`."""
         if self._axes is None:
-            axes, o = self.chain.joint_axes(self.frames)
-            a = axes
-            moments = np.stack([o[:, 1] * a[:, 2] - o[:, 2] * a[:, 1],
-                                o[:, 2] * a[:, 0] - o[:, 0] * a[:, 2],
-                                o[:, 0] * a[:, 1] - o[:, 1] * a[:, 0]], axis=1)
-            self._axes = (axes, moments)
-        axes, moments = self._axes
-        # n . (a x (p - o)) = a . (p x n) + n . (o x a)
-        p, n = point, normal
-        pxn = np.array([p[1] * n[2] - p[2] * n[1], p[2] * n[0] - p[0] * n[2],
-                        p[0] * n[1] - p[1] * n[0]])
-        g = axes @ pxn + moments @ n
-        if self.chain._has_prismatic:
-            g = np.where(self.chain.revolute, g, axes @ n)
-        return g * self.chain.moved_by[link]
+            self._axes = self.chain.normal_gradient_basis(self.frames)
+        p0, p1, p2 = point.tolist()
+        n0, n1, n2 = normal.tolist()
+        v = np.array([p1 * n2 - p2 * n1, p2 * n0 - p0 * n2, p0 * n1 - p1 * n0, n0, n1, n2])
+        return (self._axes @ v) * self.chain.moved_mask[link]
 
 
 class CollisionChecker:
@@ -120,13 +113,34 @@ class CollisionChecker:
         self.tool_group = self.group[self._tool]
         self.support = find_support(world, self.fixed)
         self.slides = world.scene.robot.model == "planar"  # the whole robot rests on its support
-        self._radii = np.array([p.shape.radius for p in self.link_parts])
         self._static_link = np.array([self.group[p.link] == 0 for p in self.link_parts])
         self._in_tool_group = np.array([self.group[p.link] == self.tool_group
                                         for p in self.link_parts])
         self.self_pairs = self._self_pairs()
         self._self_a = np.array([a for a, _ in self.self_pairs], dtype=int)
         self._self_b = np.array([b for _, b in self.self_pairs], dtype=int)
+        # Flat list of body parts, for a vectorized broad phase.
+        self._flat = [(name, k, part) for name, parts in self.body_parts.items()
+                      for k, part in enumerate(parts)]
+        self._flat_of = {}
+        for j, (name, _, _) in enumerate(self._flat):
+            self._flat_of.setdefault(name, []).append(j)
+        self._box_c = np.array([p.box_center for p in self.link_parts]).reshape(-1, 3)
+        self._box_h = np.array([p.box_half for p in self.link_parts]).reshape(-1, 3)
+        self._body_box_c, self._body_box_h = self._body_boxes(self._start)
+        self._static_placed = {
+            ("body", name, k): Placed(part.shape, self._start[name] @ part.shape.local)
+            for name, k, part in self._flat}
+        # Which link-body pairs are covered (rows: link parts; columns: body parts).
+        self._covered = {}
+        for static in (False, True):
+            covered = np.ones((len(self.link_parts), len(self._flat)), dtype=bool)
+            for j, (name, _, _) in enumerate(self._flat):
+                if name in self.support:
+                    covered[:, j] = False if self.slides else ~self._static_link
+                elif name in self.fixed and not static:
+                    covered[:, j] = ~self._static_link
+            self._covered[static] = covered
 
     # ------------------------------------------------------------ setup
 
@@ -177,60 +191,62 @@ class CollisionChecker:
         pose. `held`: (name, grasp), grasp = the object's pose in the tool
         frame. `ignore`: names ("wall", "body:wall", "link:panda_hand") left out.
         """
-        query = _Query(self.world.chain, np.asarray(q, dtype=float))
+        query = self._query(q, body_poses)
         frames = query.frames
         held_name, held_pose = self._held_pose(frames, held)
         poses = self._body_poses(body_poses)
         out: list[Contact] = []
         parts = self.link_parts
-        centers = np.array([frames[p.link][:3, :3] @ p.shape.center + frames[p.link][:3, 3]
-                            for p in parts])
         usable = np.array([not _ignored(p, ignore) for p in parts])
-        # Robot links vs bodies.
-        for name, body_parts in self.body_parts.items():
-            if name == held_name or name in ignore or f"body:{name}" in ignore:
-                continue
-            pose = poses[name]
-            allowed = usable.copy()
-            if name in self.support:
-                allowed &= False if self.slides else ~self._static_link
-            elif name in self.fixed and not static:
-                allowed &= ~self._static_link
-            for k, bp in enumerate(body_parts):
-                c = pose[:3, :3] @ bp.shape.center + pose[:3, 3]
-                gaps = np.linalg.norm(centers - c, axis=1) - self._radii - bp.shape.radius
-                for i in np.nonzero((gaps <= activation) & allowed)[0]:
-                    self._pair(query, out, activation, (i, parts[i], None),
-                               (("body", name, k), bp, pose))
+        # Robot links vs bodies: bounding boxes of all pairs at once.
+        link_c, link_h = world_boxes(np.array([frames[p.link] for p in parts]),
+                                     self._box_c, self._box_h)
+        body_c, body_h = self._body_box_c, self._body_box_h
+        columns = np.ones(len(self._flat), dtype=bool)
+        if body_poses:
+            rows = [j for name in body_poses for j in self._flat_of.get(name, ())]
+            if rows:
+                body_c, body_h = body_c.copy(), body_h.copy()
+                body_c[rows], body_h[rows] = self._body_boxes(poses, rows)
+        for name in (held_name, *ignore):
+            bare = name.partition(":")[2] if name and name.startswith("body:") else name
+            for j in self._flat_of.get(bare, ()):
+                columns[j] = False
+        close = box_gaps(link_c, link_h, body_c, body_h) <= activation
+        close &= self._covered[bool(static)]
+        close &= usable[:, None] & columns[None, :]
+        for i, j in zip(*np.nonzero(close), strict=True):
+            name, k, bp = self._flat[j]
+            self._pair(query, out, activation, (int(i), parts[i], None),
+                       (("body", name, k), bp, poses[name]))
         if held_name is not None:
-            self._held_pairs(query, out, activation, held_name, held_pose, poses, ignore,
-                             centers, usable)
+            self._held_pairs(query, out, activation, held_name, held_pose, poses,
+                             (link_c, link_h), (body_c, body_h), columns, usable)
         # Self-collision.
         if len(self._self_a):
             ia, ib = self._self_a, self._self_b
-            gaps = (np.linalg.norm(centers[ia] - centers[ib], axis=1)
-                    - self._radii[ia] - self._radii[ib])
+            apart = np.abs(link_c[ia] - link_c[ib]) - link_h[ia] - link_h[ib]
+            gaps = np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=1))
             for k in np.nonzero((gaps <= activation) & usable[ia] & usable[ib])[0]:
                 a, b = int(ia[k]), int(ib[k])
                 self._pair(query, out, activation, (a, parts[a], None), (b, parts[b], None))
         return out
 
-    def _held_pairs(self, query, out, activation, held_name, held_pose, poses, ignore,
-                    centers, usable):
+    def _held_pairs(self, query, out, activation, held_name, held_pose, poses, links, bodies,
+                    columns, usable):
+        """Held object vs bodies and vs links outside the tool's rigid group."""
+        link_c, link_h = links
+        body_c, body_h = bodies
         for h, hp in enumerate(self._held(held_name)):
-            hc = held_pose[:3, :3] @ hp.shape.center + held_pose[:3, 3]
+            hc, hh = world_boxes(held_pose[None], hp.box_center[None], hp.box_half[None])
             held_side = (("held", h), hp, held_pose)
-            for name, body_parts in self.body_parts.items():
-                if name == held_name or name in ignore or f"body:{name}" in ignore:
-                    continue
-                pose = poses[name]
-                for k, bp in enumerate(body_parts):
-                    c = pose[:3, :3] @ bp.shape.center + pose[:3, 3]
-                    if np.linalg.norm(hc - c) - hp.shape.radius - bp.shape.radius <= activation:
-                        self._pair(query, out, activation, held_side,
-                                   (("body", name, k), bp, pose))
-            gaps = np.linalg.norm(centers - hc, axis=1) - self._radii - hp.shape.radius
-            for i in np.nonzero((gaps <= activation) & usable & ~self._in_tool_group)[0]:
+            near = (box_gaps(hc, hh, body_c, body_h)[0] <= activation) & columns
+            for j in np.nonzero(near)[0]:
+                name, k, bp = self._flat[j]
+                self._pair(query, out, activation, held_side,
+                           (("body", name, k), bp, poses[name]))
+            near = (box_gaps(hc, hh, link_c, link_h)[0] <= activation) & usable
+            for i in np.nonzero(near & ~self._in_tool_group)[0]:
                 self._pair(query, out, activation, held_side, (i, self.link_parts[i], None))
 
     def _pair(self, query, out, activation, side_a, side_b) -> None:
@@ -238,9 +254,7 @@ class CollisionChecker:
         key_a, pa, pose_a = side_a
         key_b, pb_, pose_b = side_b
         a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
-        axis = b.t[:3, 3] - a.t[:3, 3]
-        norm = math.sqrt(float(axis @ axis))
-        if norm > 1e-9 and -overlap(a, b, axis / norm) > activation:
+        if separation_bound(a, b) > activation:
             return
         contact = self._contact(query, pa, a, pb_, b)
         if contact.distance <= activation:
@@ -274,7 +288,7 @@ class CollisionChecker:
 
         For owners made of several shapes, the closest pair of shapes.
         """
-        query = _Query(self.world.chain, np.asarray(q, dtype=float))
+        query = self._query(q, body_poses)
         held_name, held_pose = self._held_pose(query.frames, held)
         poses = self._body_poses(body_poses)
         best = None
@@ -311,6 +325,20 @@ class CollisionChecker:
         return Contact(f"body:{name_a}", f"body:{name_b}", d, p1, p2, n, grad)
 
     # ------------------------------------------------------------ internals
+
+    def _body_boxes(self, poses, rows=None):
+        flat = self._flat if rows is None else [self._flat[j] for j in rows]
+        if not flat:
+            return np.zeros((0, 3)), np.zeros((0, 3))
+        frames = np.array([poses[name] for name, _, _ in flat])
+        return world_boxes(frames, np.array([p.box_center for _, _, p in flat]),
+                           np.array([p.box_half for _, _, p in flat]))
+
+    def _query(self, q, body_poses) -> _Query:
+        placed = self._static_placed
+        if body_poses:
+            placed = {key: v for key, v in placed.items() if key[1] not in body_poses}
+        return _Query(self.world.chain, np.asarray(q, dtype=float), placed)
 
     def _held_pose(self, frames, held):
         if held is None:

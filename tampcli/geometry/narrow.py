@@ -126,24 +126,43 @@ def overlap(a: Placed, b: Placed, u: np.ndarray) -> float:
 _WORLD_AXES = np.vstack([np.eye(3), -np.eye(3)])
 
 
+def separation_bound(a: Placed, b: Placed) -> float:
+    """A lower bound on the distance: the widest gap between the solids' projections
+    on the centre line and on the face normals of a box among them."""
+    axis = b.pos - a.pos
+    norm = math.sqrt(float(axis @ axis))
+    if norm <= 1e-9:
+        return -math.inf
+    dirs = [axis / norm]
+    for placed in (a, b):
+        if placed.shape.kind == "box":
+            # Each face normal, turned to point from a towards b.
+            rot = placed.rot
+            signs = np.sign(rot.T @ axis)
+            dirs.extend((rot * np.where(signs == 0, 1.0, signs)).T)
+    u = np.array(dirs)
+    return float(-(a.supports(u) + b.supports(-u)).min())
+
+
 def _candidates(a: Placed, b: Placed, normal) -> np.ndarray:
     """Directions (k, 3) on which to bound the penetration depth."""
-    dirs = [_WORLD_AXES]
+    rows = [_WORLD_AXES]
     if normal is not None:
-        dirs.append(normal[None, :])
+        rows.append(normal.reshape(1, 3))
     axis = b.pos - a.pos
-    norm = float(np.linalg.norm(axis))
+    norm = math.sqrt(float(axis @ axis))
     if norm > 1e-12:
-        dirs.append((axis / norm)[None, :])
+        rows.append((axis / norm).reshape(1, 3))
     for placed in (a, b):
         kind = placed.shape.kind
         if kind == "box":
-            dirs.append(placed.rot.T)
-            dirs.append(-placed.rot.T)
+            rows.append(placed.rot.T)
+            rows.append(-placed.rot.T)
         elif kind in ("cylinder", "capsule"):
-            dirs.append(placed.rot[:, 2][None, :])
-            dirs.append(-placed.rot[:, 2][None, :])
-    return np.vstack(dirs)
+            z = placed.rot[:, 2].reshape(1, 3)
+            rows.append(z)
+            rows.append(-z)
+    return np.concatenate(rows)
 
 
 def _checked_penetration(d, p1, p2, normal, a: Placed, b: Placed):

@@ -32,6 +32,17 @@ class Shape:
     size: tuple[float, ...] = ()  # box extents; (radius, height); (radius,)
     vertices: np.ndarray | None = None  # convex only, in the shape's own frame
 
+    def local_box(self) -> tuple[np.ndarray, np.ndarray]:
+        """Centre and half extents of an axis-aligned box around the solid, own frame."""
+        if self.vertices is not None:
+            lo, hi = self.vertices.min(axis=0), self.vertices.max(axis=0)
+            return 0.5 * (lo + hi), 0.5 * (hi - lo)
+        if self.kind == "sphere":
+            return np.zeros(3), np.full(3, self.size[0])
+        r, h = self.size
+        extra = r if self.kind == "capsule" else 0.0
+        return np.zeros(3), np.array([r, r, 0.5 * h + extra])
+
     def support(self, direction_local: np.ndarray) -> float:
         """max over the solid of direction . x, in the shape's own frame."""
         u = direction_local
@@ -120,13 +131,12 @@ def _hull(path: str, scale: tuple[float, float, float]):
     remap = -np.ones(len(points), dtype=int)
     remap[used] = np.arange(len(used))
     vertices = points[used]
-    faces = []
-    for simplex, eq in zip(hull.simplices, hull.equations, strict=True):
-        a, b, c = points[simplex]
-        if np.dot(np.cross(b - a, c - a), eq[:3]) < 0:
-            simplex = simplex[[0, 2, 1]]
-        faces.extend((3, *remap[simplex]))
-    face_array = np.array(faces, dtype=np.int64)
+    simplices = hull.simplices.copy()
+    a, b, c = (points[simplices[:, k]] for k in range(3))
+    inward = np.einsum("ij,ij->i", np.cross(b - a, c - a), hull.equations[:, :3]) < 0
+    simplices[inward] = simplices[inward][:, [0, 2, 1]]
+    faces = np.column_stack([np.full(len(simplices), 3), remap[simplices]]).ravel()
+    face_array = faces.astype(np.int64)
     vertices.flags.writeable = False
     face_array.flags.writeable = False
     return vertices, face_array
