@@ -72,15 +72,29 @@ def test_declared_cost_mismatch_is_a_warning(cli, plan_file):
     assert "declares cost 9" in run.err
 
 
-def test_solution_json_plan_is_checked(cli, plan_file):
-    solution = {"version": 1, "domain": str(GRIPPER), "problem": str(GRIPPER1),
-                "scene": None, "status": "solved", "plan": PLAN[:-1]}
-    path = plan_file([json.dumps(solution)], "solution.json")
-    run = cli("validate", "--json", GRIPPER, GRIPPER1, path)
+def write_solution(tmp_path, plan):
+    from tampcli import solution
+
+    path = tmp_path / "solution.json"
+    solution.write(solution.Solution(str(GRIPPER), str(GRIPPER1), None, "solved",
+                                     plan=tuple(plan), symbolic_cost=len(plan)), path)
+    return path
+
+
+def test_solution_json_plan_is_checked(cli, tmp_path):
+    run = cli("validate", "--json", GRIPPER, GRIPPER1, write_solution(tmp_path, PLAN[:-1]))
     data = json.loads(run.out)
     assert run.code == 1
     assert data["violations"][0]["kind"] == "symbolic"
     assert "goal not reached" in data["violations"][0]["reason"]
+
+
+def test_symbolic_solution_json_is_valid(cli, tmp_path):
+    run = cli("validate", "--json", GRIPPER, GRIPPER1, write_solution(tmp_path, PLAN))
+    data = json.loads(run.out)
+    assert run.code == 0, run.out + run.err
+    assert data["status"] == "valid" and data["cost"] == 11
+    assert data["geometry"] in ("checked", "unavailable")
 
 
 @pytest.mark.parametrize("content,where", [

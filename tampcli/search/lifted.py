@@ -40,6 +40,7 @@ class World:
         for obj in (*domain.constants, *problem.objects):
             self.object_types[obj.name] = obj.types
         self._by_type: dict[str, tuple[str, ...]] = {}
+        self._compiled: dict = {}
         self.values: dict[tuple[str, ...], float] = {
             (v.term.name, *v.term.args): v.value for v in problem.init_values}
         self.cost_function = (problem.metric.expression.name
@@ -96,13 +97,15 @@ class World:
             return state
         facts = set(state)
         for stratum in self._strata:
+            rules = [(ax.name, self.compiled(ax.body, tuple(p.name for p in ax.params)),
+                      [self.objects_of(p.types) for p in ax.params]) for ax in stratum]
             changed = True
             while changed:  # naive fixpoint: few objects, small bodies
                 changed = False
-                for axiom in stratum:
-                    for binding in self.bindings(axiom.params, {}):
-                        head = (axiom.name, *(binding[p.name] for p in axiom.params))
-                        if head not in facts and self.holds(axiom.body, binding, facts):
+                for name, body, domains in rules:
+                    for combo in itertools.product(*domains):
+                        head = (name, *combo)
+                        if head not in facts and body(*combo, facts):
                             facts.add(head)
                             changed = True
         return frozenset(facts)
@@ -110,24 +113,55 @@ class World:
     # ------------------------------------------------------------ formulas
 
     def holds(self, f: ast.Formula, binding: Binding, state) -> bool:
+        return self.compiled(f, tuple(binding))(*binding.values(), state)
+
+    def compiled(self, f: ast.Formula, params: tuple[str, ...]):
+        """f as a Python function of the values of `params`, then the state.
+
+        Formulas are evaluated millions of times for derived predicates, so
+        each is turned once into one Python expression (quantifiers become
+        any/all over tuples of objects) instead of being walked node by node.
+        """
+        key = (id(f), params)
+        fn = self._compiled.get(key)
+        if fn is None:
+            names = {p: f"v{i}" for i, p in enumerate(params)}
+            scope: dict = {}
+            body = self._expression(f, names, scope)
+            args = ", ".join([*names.values(), "st"])
+            exec(f"def fn({args}):\n    return {body}\n", scope)  # source built from our own AST
+            fn = self._compiled[key] = (f, scope["fn"])  # f kept alive: its id stays unique
+        return fn[1]
+
+    def _expression(self, f: ast.Formula, names: dict[str, str], scope: dict) -> str:
+        def term(a: str) -> str:
+            return names[a] if a in names else repr(a)
+
         if isinstance(f, ast.Atom):
-            args = tuple(binding.get(a, a) for a in f.args)
             if f.predicate == "=":
-                return args[0] == args[1]
-            return (f.predicate, *args) in state
-        if isinstance(f, ast.And):
-            return all(self.holds(p, binding, state) for p in f.parts)
-        if isinstance(f, ast.Or):
-            return any(self.holds(p, binding, state) for p in f.parts)
+                return f"({term(f.args[0])} == {term(f.args[1])})"
+            return "((" + ", ".join([repr(f.predicate), *map(term, f.args)]) + ",) in st)"
+        if isinstance(f, (ast.And, ast.Or)):
+            if not f.parts:
+                return "True" if isinstance(f, ast.And) else "False"
+            joiner = " and " if isinstance(f, ast.And) else " or "
+            return "(" + joiner.join(self._expression(p, names, scope) for p in f.parts) + ")"
         if isinstance(f, ast.Not):
-            return not self.holds(f.part, binding, state)
+            return f"(not {self._expression(f.part, names, scope)})"
         if isinstance(f, ast.Imply):
-            return (not self.holds(f.antecedent, binding, state)
-                    or self.holds(f.consequent, binding, state))
-        if isinstance(f, ast.Exists):
-            return any(self.holds(f.body, b, state) for b in self.bindings(f.params, binding))
-        if isinstance(f, ast.Forall):
-            return all(self.holds(f.body, b, state) for b in self.bindings(f.params, binding))
+            return (f"((not {self._expression(f.antecedent, names, scope)}) or "
+                    f"{self._expression(f.consequent, names, scope)})")
+        if isinstance(f, (ast.Exists, ast.Forall)):
+            inner = dict(names)
+            loops = []
+            for p in f.params:
+                var = inner[p.name] = f"v{len(scope)}_{len(inner)}"
+                domain = f"objects{len(scope)}"
+                scope[domain] = self.objects_of(p.types)
+                loops.append(f"for {var} in {domain}")
+            body = self._expression(f.body, inner, scope)
+            word = "any" if isinstance(f, ast.Exists) else "all"
+            return f"{word}({body} {' '.join(loops)})"
         raise TypeError(f"not a formula: {f!r}")
 
     def why_false(self, f: ast.Formula, binding: Binding, state) -> list[str]:

@@ -252,3 +252,71 @@ def test_costs_equal_kstar(domain, problem, k):
         assert validate_plan(dom, prob, list(p.names)).cost == p.cost
     counts = Counter(p.cost for p in plans)
     assert sum(counts.values()) == k
+
+
+# ---------------------------------------------------------------- LM-cut with landmarks
+
+def exact_distances(task):
+    """h* of every reachable state, by backward Dijkstra over the whole state space."""
+    import heapq
+
+    states, edges, todo = {task.init}, [], [task.init]
+    while todo:
+        s = todo.pop()
+        for op, t in task.successors(s):
+            edges.append((s, op, t))
+            if t not in states:
+                states.add(t)
+                todo.append(t)
+    preds = {s: [] for s in states}
+    for s, op, t in edges:
+        preds[t].append((op.cost, s))
+    dist = {s: float("inf") for s in states}
+    heap = [(0.0, i, s) for i, s in enumerate(s for s in states if task.is_goal(s))]
+    for _, _, s in heap:
+        dist[s] = 0.0
+    heapq.heapify(heap)
+    tie = len(heap)
+    while heap:
+        d, _, s = heapq.heappop(heap)
+        if d > dist[s]:
+            continue
+        for c, p in preds[s]:
+            if d + c < dist[p]:
+                dist[p] = d + c
+                tie += 1
+                heapq.heappush(heap, (d + c, tie, p))
+    return dist, edges
+
+
+@pytest.mark.parametrize("domain,problem", [
+    (IPC / "blocks/domain.pddl", IPC / "blocks/probBLOCKS-4-0.pddl"),
+    (IPC / "gripper/domain.pddl", IPC / "gripper/prob01.pddl"),
+])
+def test_landmark_cut_values_and_successor_bounds_are_admissible(domain, problem):
+    from tampcli.search.heuristics import LMCut
+    from tampcli.search.topk_landmarks import LandmarkCut
+
+    task, _, _ = task_of(domain, problem)
+    dist, edges = exact_distances(task)
+    ours, theirs = LandmarkCut(task), LMCut(task)
+    index = {id(op): i for i, op in enumerate(task.operators)}
+    cache = {}
+    for s in dist:
+        h, found, rest = ours.landmarks(s)
+        cache[s] = (h, found)
+        assert rest is None
+        assert h <= dist[s] + 1e-9
+        assert h == theirs(s)  # the same algorithm as the shared heuristic
+        assert h == pytest.approx(sum(m for m, _ in found))
+        budget = h / 2
+        partial, _, rest = ours.landmarks(s, budget)
+        if h > budget and h > 0:
+            assert budget < partial <= h
+            assert rest is not None
+            resumed, _, rest2 = ours.landmarks(s, float("inf"), rest)
+            assert rest2 is None and resumed == h
+    for s, op, t in edges:
+        h, found = cache[s]
+        bound = h - sum(m for m, ops in found if index[id(op)] in ops)
+        assert bound <= dist[t] + 1e-9
