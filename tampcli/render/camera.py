@@ -75,9 +75,10 @@ def box_corners(lo, hi) -> np.ndarray:
 
 
 def auto_camera(points, fov: float = 50.0, aspect: float = 4 / 3,
-                margin: float = 1.05) -> Camera:
+                margin: float = 1.05, reserve_bottom: float = 0.0) -> Camera:
     """The closest camera looking along a fixed direction (from the front-right,
-    above) that sees all `points` (k, 3), with `margin` around them.
+    above) that sees all `points` (k, 3), with `margin` around them, above the
+    bottom `reserve_bottom` fraction of the image (where the caption goes).
 
     A point p is inside the view of an eye e iff it is on the inner side of
     the four planes of the view's sides, each linear in e: n . e >= n . p.
@@ -86,6 +87,8 @@ def auto_camera(points, fov: float = 50.0, aspect: float = 4 / 3,
     forward limits, so one pair of sides touches the points and the other
     leaves room. No iteration, so no instability for elongated scenes.
     """
+    if not 0.0 <= reserve_bottom < 0.5:
+        raise ValueError(f"reserve_bottom must be in [0, 0.5), got {reserve_bottom}")
     points = np.asarray(points, dtype=float).reshape(-1, 3)
     back = _AUTO_DIRECTION / np.linalg.norm(_AUTO_DIRECTION)
     forward = -back
@@ -94,25 +97,30 @@ def auto_camera(points, fov: float = 50.0, aspect: float = 4 / 3,
     up = np.cross(right, forward)
     tan_v = math.tan(math.radians(fov) / 2.0) / margin
     tan_h = tan_v * aspect
+    tan_b = tan_v * (1.0 - 2.0 * reserve_bottom)  # the usable image's bottom edge
     # m = max over points of n . p for the side planes' normals n = +-axis - tan * forward
     m_right, m_left = (float(np.max(points @ (s * right - tan_h * forward))) for s in (1, -1))
-    m_top, m_bottom = (float(np.max(points @ (s * up - tan_v * forward))) for s in (1, -1))
+    m_top = float(np.max(points @ (up - tan_v * forward)))
+    m_bottom = float(np.max(points @ (-up - tan_b * forward)))
     a = (m_right - m_left) / 2.0
-    b = (m_top - m_bottom) / 2.0
-    c = min(-(m_right + m_left) / (2.0 * tan_h), -(m_top + m_bottom) / (2.0 * tan_v))
+    # top and bottom both touch: b - tan_v c = m_top and -b - tan_b c = m_bottom
+    b = (m_top * tan_b - m_bottom * tan_v) / (tan_b + tan_v)
+    c = min(-(m_right + m_left) / (2.0 * tan_h), (b - m_top) / tan_v)
     eye = a * right + b * up + c * forward
     depth = max(float(np.mean((points - eye) @ forward)), 0.1)
     target = eye + depth * forward
     return Camera(tuple(float(v) for v in eye), tuple(float(v) for v in target), fov=fov)
 
 
-def choose_camera(given: dict | None, scene_camera, points, aspect: float) -> Camera:
+def choose_camera(given: dict | None, scene_camera, points, aspect: float,
+                  reserve_bottom: float = 0.0) -> Camera:
     """`--camera` fields over the scene's `[camera]` over automatic framing."""
     base = None
     if scene_camera is not None:
         base = _from_scene(scene_camera)
     if base is None:
-        base = auto_camera(points, fov=(given or {}).get("fov", 50.0), aspect=aspect)
+        base = auto_camera(points, fov=(given or {}).get("fov", 50.0), aspect=aspect,
+                           reserve_bottom=reserve_bottom)
     fields = {"eye": base.eye, "target": base.target, "up": base.up, "fov": base.fov}
     fields.update(given or {})
     return Camera(**fields)

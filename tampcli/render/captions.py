@@ -28,10 +28,20 @@ class Captioner:
 
     def __init__(self, width: int, height: int):
         self.width, self.height = width, height
-        self.size = max(10, round(height / 28))
+        self.size = self.font_size(height)
         self.font = load_font(self.size)
         self.pad = max(3, self.size // 3)
-        self.bar = self.size + 2 * self.pad
+        self.bar = self.bar_height(height)
+
+    @staticmethod
+    def font_size(height: int) -> int:
+        return max(10, round(height / 28))
+
+    @classmethod
+    def bar_height(cls, height: int) -> int:
+        """Pixels the bar takes at the bottom of a frame `height` pixels tall."""
+        size = cls.font_size(height)
+        return size + 2 * max(3, size // 3)
 
     def draw(self, frame: np.ndarray, left: str, right: str) -> np.ndarray:
         image = Image.fromarray(frame)

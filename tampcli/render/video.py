@@ -7,6 +7,7 @@ import time
 from pathlib import Path
 
 from tampcli.render.camera import choose_camera
+from tampcli.render.captions import Captioner
 from tampcli.render.encode import keyframe_strip, open_writer, save_image
 from tampcli.render.frames import FrameJob, frame_renderer, render_frames
 from tampcli.render.inputs import check_against_world, load_inputs, mode_kind_of
@@ -69,8 +70,9 @@ def _plan(inputs, options: RenderOptions):
         points = None
         if inputs.scene.camera is None:
             points = visible_points(world, replay.states(min(options.fps, 4.0)))
+        bar = Captioner.bar_height(options.height) / options.height if options.caption else 0.0
         camera = choose_camera(options.camera, inputs.scene.camera, points,
-                               options.width / options.height)
+                               options.width / options.height, reserve_bottom=bar)
     return replay, camera
 
 

@@ -59,6 +59,15 @@ def test_auto_camera_fits_and_fills_the_frame(lo, hi, aspect):
     assert abs(x.max() + x.min()) < 0.05 or abs(y.max() + y.min()) < 0.05  # centred
 
 
+@pytest.mark.parametrize("reserve", [0.1, 0.3])
+def test_auto_camera_keeps_the_caption_band_free(reserve):
+    points = box_corners((-0.3, -0.6, -0.04), (0.9, 0.6, 0.8))
+    _, y = _project(auto_camera(points, reserve_bottom=reserve), points, 4 / 3)
+    bottom = -(1 - 2 * reserve)  # the band's top edge, in the same units as y
+    assert y.min() >= bottom - 1e-9 and y.max() <= 1.0
+    assert y.min() - bottom < 0.06 or 1.0 - y.max() < 0.06  # still fills the rest
+
+
 def test_choose_camera_precedence():
     points = box_corners((0, 0, 0), (1, 1, 1))
     scene = Camera((3.0, 0.0, 1.0), (0.0, 0.0, 0.0))
