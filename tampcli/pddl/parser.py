@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import itertools
 import re
 from pathlib import Path
 
@@ -188,27 +187,28 @@ def _check_refused(text: str, path: str | None) -> None:
                                       path, line, column, source_line_at(text, line))
 
 
-_PARENS_OR_COMMENT = re.compile(r"[()]|;[^\n]*")
+_PAREN_RUNS = re.compile(r"\(+|\)+|;[^\n]*")
 
 
 def _check_nesting(text: str, path: str | None) -> None:
-    stripped = re.sub(r";[^\n]*|[^();]+", "", text)
-    if not stripped:
-        return
-    deltas = (1 if ch == "(" else -1 for ch in stripped)
-    if max(itertools.accumulate(deltas)) <= MAX_NESTING:
-        return
+    """Refuse nesting deeper than MAX_NESTING, pointing at the first "(" too deep.
+
+    Runs of parentheses are taken whole, so a megabyte of "(((" is a handful
+    of matches.
+    """
     depth = 0
-    for match in _PARENS_OR_COMMENT.finditer(text):
-        if match.group() == "(":
-            depth += 1
+    for match in _PAREN_RUNS.finditer(text):
+        run = match.group()
+        if run[0] == "(":
+            depth += len(run)
             if depth > MAX_NESTING:
-                line = text.count("\n", 0, match.start()) + 1
-                column = match.start() - (text.rfind("\n", 0, match.start()) + 1) + 1
+                pos = match.end() - (depth - MAX_NESTING)
+                line = text.count("\n", 0, pos) + 1
+                column = pos - (text.rfind("\n", 0, pos) + 1) + 1
                 raise PDDLSyntaxError(f"nesting deeper than {MAX_NESTING} levels",
                                       path, line, column, source_line_at(text, line))
-        elif match.group() == ")":
-            depth -= 1
+        elif run[0] == ")":
+            depth -= len(run)
 
 
 # ---------------------------------------------------------------- tree builder
