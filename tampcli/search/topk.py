@@ -122,6 +122,11 @@ class TopK:
     def __iter__(self) -> Iterator[Plan]:
         return self
 
+    @property
+    def status(self) -> str:
+        """"running" (more plans may come), "exhausted" (no other plan) or "limit" (time)."""
+        return self.stats["status"]
+
     def __next__(self) -> Plan:
         return next(self._plans)
 

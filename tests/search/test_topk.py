@@ -80,8 +80,14 @@ SMALL = [
                  60, id="sussman"),
     pytest.param(ROOT / "domains/gripper/domain.pddl", ROOT / "problems/gripper/p01.pddl", 60,
                  id="gripper-2"),
-    pytest.param(IPC / "blocks/domain.pddl", IPC / "blocks/probBLOCKS-4-0.pddl", 20,
+    pytest.param(IPC / "blocks/domain.pddl", IPC / "blocks/probBLOCKS-4-0.pddl", 12,
                  id="blocks-4-0"),
+    pytest.param(IPC / "psr-small/p01-domain.pddl", IPC / "psr-small/p01-s2-n1-l2-f50.pddl", 40,
+                 id="psr-small-1"),
+    pytest.param(IPC / "miconic-fulladl/domain.pddl", IPC / "miconic-fulladl/f1-0.pddl", 40,
+                 id="miconic-fulladl-1"),
+    pytest.param(IPC / "briefcaseworld/domain.pddl", IPC / "briefcaseworld/pfile1.pddl", 40,
+                 id="briefcaseworld-1"),
 ]
 
 
@@ -96,9 +102,10 @@ def test_k_best_equal_exhaustive_enumeration(domain, problem, k, loopless):
 
 TOY_DOMAIN = """
 (define (domain ring)
-  (:requirements :strips :typing :action-costs :conditional-effects)
+  (:requirements :strips :typing :action-costs :conditional-effects :derived-predicates)
   (:types node)
-  (:predicates (at ?n - node) (edge ?a ?b - node) (free ?a ?b - node) (lit) (goal-node ?n - node))
+  (:predicates (at ?n - node) (edge ?a ?b - node) (free ?a ?b - node) (lit) (done))
+  (:derived (done) (and (at n3) (lit)))
   (:functions (total-cost) - number (len ?a ?b - node) - number)
   (:action go
     :parameters (?a ?b - node)
@@ -121,7 +128,7 @@ TOY_PROBLEM = """
          (free n1 n2) (free n2 n1)
          (= (len n0 n1) 1) (= (len n1 n2) 2) (= (len n2 n3) 1) (= (len n0 n2) 4)
          (= (len n2 n0) 1) (= (len n1 n0) 3) (= (total-cost) 0))
-  (:goal (and (at n3) (lit)))
+  (:goal (done))
   (:metric minimize (total-cost)))
 """
 
