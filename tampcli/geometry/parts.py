@@ -13,7 +13,7 @@ import fcl
 import numpy as np
 
 from tampcli.geometry import transforms
-from tampcli.geometry.shapes import Shape, fcl_transform, mesh_hull, primitive
+from tampcli.geometry.shapes import Shape, fcl_transform, mesh_hulls, primitive
 from tampcli.geometry.shapes import pybullet_link_shapes as link_shapes
 
 SUPPORT_TOLERANCE = 0.005  # m
@@ -73,7 +73,7 @@ def body_shapes(world, body) -> list[Shape]:
     if body.shape in ("box", "cylinder", "sphere"):
         return [primitive(body.shape, body.size)]
     if body.shape == "mesh":
-        return [mesh_hull(body.mesh, body.scale)]
+        return mesh_hulls(body.mesh, body.scale)
     pb, client, uid = world.pb, world.client, world.pb_body(body.name)
     base_inv = transforms.pose_inverse(body.matrix)
     shapes = []

@@ -411,8 +411,8 @@ def _body(src: TomlSource, index: int, data: dict) -> Body:
         mesh = r.path("mesh")
         if mesh is None:
             raise r.error("a mesh object needs `mesh = \"file.obj\"`", "shape")
-        if not mesh.lower().endswith(".obj"):
-            raise r.error("a mesh must be a Wavefront .obj file", "mesh")
+        if not mesh.lower().endswith((".obj", ".stl")):
+            raise r.error("a mesh must be a Wavefront .obj or an .stl file", "mesh")
     else:
         urdf = r.path("urdf")
         if urdf is None:

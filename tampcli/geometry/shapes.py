@@ -16,6 +16,7 @@ from scipy.spatial import ConvexHull
 
 from tampcli.errors import SceneError
 from tampcli.geometry import transforms
+from tampcli.geometry.meshes import read_mesh_parts
 
 GEOM_SPHERE, GEOM_BOX, GEOM_CYLINDER, GEOM_MESH, GEOM_CAPSULE = 2, 3, 4, 5, 7
 
@@ -103,25 +104,31 @@ def primitive(kind: str, size, local=None) -> Shape:
                  vertices)
 
 
-def mesh_hull(path: str, scale=(1.0, 1.0, 1.0), local=None) -> Shape:
-    """The convex hull of an OBJ file's vertices, scaled, as an fcl.Convex."""
+def mesh_hulls(path: str, scale=(1.0, 1.0, 1.0), local=None) -> list[Shape]:
+    """The convex parts of a mesh file (see meshes.py), scaled, each as an fcl.Convex."""
     local = np.eye(4) if local is None else np.asarray(local, dtype=float)
-    vertices, faces = _hull(path, tuple(float(s) for s in scale))
-    geom = fcl.Convex(vertices, len(faces) // 4, faces)
-    lo, hi = vertices.min(axis=0), vertices.max(axis=0)
-    mid = 0.5 * (lo + hi)
-    radius = float(np.max(np.linalg.norm(vertices - mid, axis=1)))
-    return Shape(geom, local, local[:3, :3] @ mid + local[:3, 3], radius, "convex", (), vertices)
+    shapes = []
+    for vertices, faces in _hulls(path, tuple(float(s) for s in scale)):
+        geom = fcl.Convex(vertices, len(faces) // 4, faces)
+        lo, hi = vertices.min(axis=0), vertices.max(axis=0)
+        mid = 0.5 * (lo + hi)
+        radius = float(np.max(np.linalg.norm(vertices - mid, axis=1)))
+        shapes.append(Shape(geom, local, local[:3, :3] @ mid + local[:3, 3], radius, "convex",
+                            (), vertices))
+    return shapes
 
 
 @functools.lru_cache(maxsize=64)
-def _hull(path: str, scale: tuple[float, float, float]):
-    """Hull vertices and FCL face list [3, i, j, k, ...], faces wound outward.
+def _hulls(path: str, scale: tuple[float, float, float]):
+    """Per part: hull vertices and FCL face list [3, i, j, k, ...], faces wound outward.
 
     Cached by file and scale: the Panda's meshes are read once per process
-    (the results are never mutated).
+    (the arrays are read-only).
     """
-    points = read_obj_vertices(path) * np.array(scale)
+    return tuple(_hull(points * np.array(scale), path) for points in read_mesh_parts(path))
+
+
+def _hull(points: np.ndarray, path: str):
     try:
         hull = ConvexHull(points)
     except Exception as e:  # noqa: BLE001 - scipy raises QhullError for flat or tiny meshes
@@ -142,35 +149,17 @@ def _hull(path: str, scale: tuple[float, float, float]):
     return vertices, face_array
 
 
-def read_obj_vertices(path: str) -> np.ndarray:
-    """The `v x y z` lines of a Wavefront OBJ file, (n, 3)."""
-    rows = []
-    try:
-        with open(path, encoding="utf-8", errors="replace") as f:
-            for number, line in enumerate(f, start=1):
-                if line.startswith("v "):
-                    parts = line.split()
-                    try:
-                        rows.append([float(v) for v in parts[1:4]])
-                    except (ValueError, IndexError):
-                        raise SceneError(f"bad vertex line {line.strip()!r}", path=path,
-                                         line=number) from None
-    except OSError as e:
-        raise SceneError(f"cannot read mesh: {e.strerror}", path=path) from None
-    if len(rows) < 4:
-        raise SceneError(f"a mesh needs at least 4 vertices, found {len(rows)}", path=path)
-    return np.array(rows, dtype=float)
-
-
-def pybullet_link_shapes(pb, client: int, body: int, link: int, fallback_mesh=None,
-                         fallback_scale=(1.0, 1.0, 1.0)) -> list[Shape]:
+def pybullet_link_shapes(pb, client: int, body: int, link: int) -> list[Shape]:
     """Collision shapes of one link of a PyBullet body, in its URDF link frame.
 
-    PyBullet reports each shape relative to the link's inertial frame.
+    PyBullet reports each shape relative to the link's inertial frame, and
+    one entry per convex part of a mesh (all naming the same file): each
+    file is read once.
     """
     inertial = pb.getDynamicsInfo(body, link, physicsClientId=client)[3:5]
     to_link = transforms.pose(transforms.quat_to_matrix(inertial[1]), inertial[0])
     shapes = []
+    meshes_seen = set()
     for data in pb.getCollisionShapeData(body, link, physicsClientId=client):
         kind, dims, filename = data[2], data[3], data[4]
         local = to_link @ transforms.pose(transforms.quat_to_matrix(data[6]), data[5])
@@ -184,12 +173,11 @@ def pybullet_link_shapes(pb, client: int, body: int, link: int, fallback_mesh=No
             shapes.append(primitive("capsule", (dims[1], dims[0]), local))
         elif kind == GEOM_MESH:
             name = filename.decode() if isinstance(filename, bytes) else filename
-            if name in ("", "unknown_file"):
-                if fallback_mesh is None:
-                    continue
-                shapes.append(mesh_hull(fallback_mesh, fallback_scale, local))
-            else:
-                shapes.append(mesh_hull(name, dims, local))
+            key = (name, tuple(dims), tuple(np.round(local, 9).ravel()))
+            if name in ("", "unknown_file") or key in meshes_seen:
+                continue
+            meshes_seen.add(key)
+            shapes.extend(mesh_hulls(name, dims, local))
     return shapes
 
 

@@ -4,7 +4,7 @@ import pytest
 from tampcli.geometry import transforms
 from tampcli.geometry.world import World
 
-from .worlds import panda_scene, planar_scene
+from .worlds import kuka_scene, panda_scene, planar_scene
 
 
 @pytest.fixture(scope="module")
@@ -16,6 +16,12 @@ def panda():
 @pytest.fixture(scope="module")
 def planar():
     with World(planar_scene()) as world:
+        yield world
+
+
+@pytest.fixture(scope="module")
+def kuka():
+    with World(kuka_scene()) as world:
         yield world
 
 
@@ -34,7 +40,7 @@ def _pybullet_link_frames(world):
     return out
 
 
-@pytest.mark.parametrize("name", ["panda", "planar"])
+@pytest.mark.parametrize("name", ["panda", "planar", "kuka"])
 def test_fk_matches_pybullet(name, request):
     world = request.getfixturevalue(name)
     try:
@@ -70,7 +76,7 @@ def test_planar_joints_hold_world_coordinates(planar):
     np.testing.assert_allclose(planar.upper, [1.0, 1.0], atol=1e-3)
 
 
-@pytest.mark.parametrize("name", ["panda", "planar"])
+@pytest.mark.parametrize("name", ["panda", "planar", "kuka"])
 def test_point_jacobian_matches_finite_differences(name, request):
     world = request.getfixturevalue(name)
     rng = np.random.default_rng(3)
@@ -187,3 +193,29 @@ def test_close_releases_client():
     world.close()
     assert not world.pb.isConnected(physicsClientId=client)
     world.close()
+
+
+def test_any_urdf_arm(kuka):
+    assert kuka.joint_names == tuple(f"lbr_iiwa_joint_{i}" for i in range(1, 8))
+    assert kuka.tool_link == "lbr_iiwa_link_7"
+    np.testing.assert_allclose(kuka.start, np.zeros(7))
+    target = kuka.tool_pose(np.array([0.3, 0.5, 0.0, -1.2, 0.0, 0.8, 0.0]))
+    q, residual = kuka.ik(target)
+    assert residual < 1e-4
+
+
+def test_urdf_robot_with_unknown_joint_is_a_scene_error():
+    import dataclasses
+
+    from tampcli.errors import SceneError
+
+    scene = kuka_scene()
+    bad = dataclasses.replace(scene, robot=dataclasses.replace(
+        scene.robot, joints=("lbr_iiwa_joint_1", "elbow")))
+    with pytest.raises(SceneError) as info:
+        World(bad)
+    assert info.value.key == "robot.joints" and "elbow" in info.value.message
+    bad = dataclasses.replace(scene, robot=dataclasses.replace(scene.robot, tool_link="hand"))
+    with pytest.raises(SceneError) as info:
+        World(bad)
+    assert info.value.key == "robot.tool_link"

@@ -31,3 +31,22 @@ def planar_scene() -> Scene:
         box("a", (0.06, 0.06, 0.05), (-0.2, -0.3, 0.025), fixed=False),
     )
     return Scene(None, RobotSpec("planar", base=(0.0, 0.0, 0.025) + IDENTITY), bodies)
+
+
+def kuka_scene() -> Scene:
+    """Any URDF arm (the KUKA iiwa of pybullet_data, STL collision meshes), a URDF table
+    obstacle, a V-HACD mesh (5 convex parts) and an OBJ cube."""
+    import pybullet_data
+
+    data = pybullet_data.getDataPath()
+    robot = RobotSpec("urdf", urdf=f"{data}/kuka_iiwa/model.urdf", tool_link="lbr_iiwa_link_7",
+                      joints=tuple(f"lbr_iiwa_joint_{i}" for i in range(1, 8)))
+    bodies = (
+        Body("table", "urdf", pose=(0.9, 0.0, -0.62) + IDENTITY, fixed=True,
+             urdf=f"{data}/table/table.urdf"),
+        Body("duck", "mesh", pose=(0.0, 0.55, 0.3) + IDENTITY, fixed=True,
+             mesh=f"{data}/duck_vhacd.obj", scale=(0.1, 0.1, 0.1)),
+        Body("cube", "mesh", pose=(-0.5, -0.3, 0.4) + IDENTITY, fixed=True,
+             mesh=f"{data}/cube.obj", scale=(0.1, 0.1, 0.1)),
+    )
+    return Scene(None, robot, bodies)
