@@ -152,6 +152,8 @@ def _flat(sexp: Sexp) -> str:
 
 def _layout(sexp: Sexp, indent: int) -> str:
     flat = _flat(sexp)
+    if isinstance(sexp, tuple) and indent + len(flat) > WIDTH:
+        return _fill([_flat(x) for x in sexp], indent)
     if not isinstance(sexp, list) or indent + len(flat) <= WIDTH or len(sexp) < 2:
         return flat
     pad = " " * (indent + 2)
@@ -172,3 +174,16 @@ def _layout(sexp: Sexp, indent: int) -> str:
         lines.append(pad + _layout(item, indent + 2))
         i += 1
     return "\n".join(lines) + ")"
+
+
+def _fill(words: list[str], indent: int) -> str:
+    """Words on as few lines as fit the width, continuation lines at `indent`."""
+    lines, line = [], ""
+    for word in words:
+        if line and indent + len(line) + 1 + len(word) > WIDTH:
+            lines.append(line)
+            line = word
+        else:
+            line = f"{line} {word}" if line else word
+    lines.append(line)
+    return ("\n" + " " * indent).join(lines)

@@ -64,11 +64,13 @@ def describe(requirement: str) -> str:
 def report(domain: ast.Domain, problem: ast.Problem | None = None) -> RequirementReport:
     declared = tuple(dict.fromkeys(domain.requirements + (problem.requirements if problem else ())))
     first: dict[str, tuple[ast.Span, str]] = {}
-    for req, span in _domain_uses(domain):
-        first.setdefault(req, (span, "domain"))
-    if problem is not None:
-        for req, span in _problem_uses(problem):
-            first.setdefault(req, (span, "problem"))
+    for which, uses in (("domain", _domain_uses(domain)),
+                        ("problem", _problem_uses(problem) if problem else ())):
+        for req, span in uses:
+            known = first.get(req)
+            if known is None or known[1] == which and (span.line, span.column) < (
+                    known[0].line, known[0].column):
+                first[req] = (span, which)
     order = [":strips"] + sorted(_WHAT)
     used = tuple(r for r in order if r in first or r == ":strips")
     have = expand(declared)

@@ -1,0 +1,99 @@
+"""`tampcli check`: tables, JSON, warnings, the grounding and scene parts."""
+
+import json
+
+from tests.conftest import IPC, ROOT
+
+BW = ROOT / "domains" / "blocksworld" / "domain.pddl"
+BW1 = ROOT / "problems" / "blocksworld" / "p01.pddl"
+ELEVATORS = IPC / "elevators-opt08-strips"
+PLANAR = ROOT / "domains" / "planar-tamp" / "domain.pddl"
+PLANAR1 = ROOT / "problems" / "planar-tamp" / "p01.pddl"
+
+
+def test_domain_alone_prints_its_tables(cli):
+    run = cli("check", BW)
+    assert run.code == 0, run.err
+    for text in ("domain blocksworld", "requirements declared", "predicates (5)", "actions (4)",
+                 "pick-up", "handempty"):
+        assert text in run.out
+    assert "problem" not in run.out
+
+
+def test_json_has_every_part(cli):
+    run = cli("check", ELEVATORS / "domain.pddl", ELEVATORS / "p01.pddl", "--json")
+    assert run.code == 0, run.err
+    data = json.loads(run.out)
+    assert data["status"] == "ok"
+    d, p = data["domain"], data["problem"]
+    assert d["requirements"] == {"declared": [":typing", ":action-costs"],
+                                 "used": [":strips", ":action-costs", ":typing"]}
+    assert d["types"]["slow-elevator"] == ["elevator"]
+    assert d["predicates"]["lift-at"] == 2
+    assert d["functions"] == {"total-cost": 0, "travel-slow": 2, "travel-fast": 2}
+    assert d["actions"]["board"] == 5
+    assert p["objects"] == {"count": 9, "fast-elevator": 1, "passenger": 3, "slow-elevator": 2}
+    assert (p["init_facts"], p["init_values"], p["goal_atoms"]) == (75, 31, 3)
+    assert p["metric"] == "minimize (total-cost)"
+    if data["grounded"] is not None:  # grounding is another module; counted when present
+        assert data["grounded"]["operators"] > 0 and not data["grounded"]["unit_cost"]
+    assert data["scene"] is None and data["warnings"] == []
+
+
+def test_problem_table_lists_objects_per_type(cli):
+    run = cli("check", ELEVATORS / "domain.pddl", ELEVATORS / "p01.pddl")
+    assert run.code == 0, run.err
+    assert "objects: passenger" in run.out and "init facts" in run.out
+    assert "goal atoms" in run.out
+
+
+def test_long_listings_are_cut_in_tables_but_not_in_json(cli):
+    domain = IPC / "psr-small" / "p10-domain.pddl"
+    problem = next((IPC / "psr-small").glob("p10-s*.pddl"))
+    table = cli("check", domain)
+    assert "more (see --json)" in table.out
+    data = json.loads(cli("check", domain, problem, "--json").out)
+    assert len(data["domain"]["actions"]) > 25
+
+
+def test_requirement_warnings_go_to_stderr(cli, tmp_path):
+    domain = tmp_path / "d.pddl"
+    domain.write_text("(define (domain d) (:requirements :strips)\n"
+                      "  (:predicates (p ?x) (q ?x))\n"
+                      "  (:action a :parameters (?x) :precondition (not (p ?x)) :effect (p ?x)))\n")
+    run = cli("check", domain)
+    assert run.code == 0
+    assert f"warning: {domain}:3:45: uses negative conditions without declaring " \
+           ":negative-preconditions" in run.err
+    quiet = cli("check", domain, "--quiet")
+    assert quiet.err == "" and quiet.out == ""
+    data = json.loads(cli("check", domain, "--json").out)
+    assert len(data["warnings"]) == 1
+
+
+def test_scene_part_is_merged_when_the_problem_has_a_scene(cli):
+    run = cli("check", PLANAR, PLANAR1, "--json")
+    assert run.code == 0, run.err
+    scene = json.loads(run.out)["scene"]
+    if scene is None:  # the geometry package is another engineer's; absent here
+        return
+    assert scene["scene"].endswith("p01.scene.toml")
+    assert {b["name"] for b in scene["bodies"]} >= {"a", "b"}
+
+
+def test_scene_flags_need_a_problem(cli):
+    run = cli("check", BW, "--scene", "x.toml")
+    assert run.code == 2
+    assert "need a PROBLEM" in run.err
+
+
+def test_semantic_error_exit_code_and_caret(cli, tmp_path):
+    problem = tmp_path / "p.pddl"
+    problem.write_text("(define (problem p) (:domain blocksworld)\n"
+                       "  (:objects a b - block)\n  (:init (clear c))\n  (:goal (on a b)))\n")
+    run = cli("check", BW, problem)
+    assert run.code == 2
+    assert f"{problem}:3:17: unknown object or constant c" in run.err
+    assert run.err.rstrip().endswith("^")
+    assert run.out == ""
+    assert cli("check", BW, BW1).code == 0
