@@ -117,7 +117,8 @@ class LandmarkCut:
         unsat = r.pre_count[:]
         dist = [INF] * r.n_facts
         choice: list = [None] * r.n_actions
-        chosen_by: list[list[int]] = [[] for _ in range(r.n_facts)]
+        # a list only for the facts that get settled (the others are never read)
+        chosen_by: list = [()] * r.n_facts
         heap = [(0.0, f) for f in (*state, r.init_fact)]
         for _, f in heap:
             dist[f] = 0.0
@@ -127,12 +128,13 @@ class LandmarkCut:
             c, f = pop(heap)
             if c > dist[f]:
                 continue
+            chosen = chosen_by[f] = []
             for a in pre_of[f]:
                 left = unsat[a] - 1
                 unsat[a] = left
                 if left == 0:  # facts settle in cost order: f is the costliest precondition
                     choice[a] = f
-                    chosen_by[f].append(a)
+                    chosen.append(a)
                     nc = c + costs[a]
                     for q in adds[a]:
                         if nc < dist[q]:
