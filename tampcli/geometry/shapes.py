@@ -12,7 +12,6 @@ from dataclasses import dataclass
 
 import fcl
 import numpy as np
-from scipy.spatial import ConvexHull
 
 from tampcli.errors import SceneError
 from tampcli.geometry import transforms
@@ -129,6 +128,9 @@ def _hulls(path: str, scale: tuple[float, float, float]):
 
 
 def _hull(points: np.ndarray, path: str):
+    # scipy.spatial takes about a second to import: only scenes with meshes pay it.
+    from scipy.spatial import ConvexHull
+
     try:
         hull = ConvexHull(points)
     except Exception as e:  # noqa: BLE001 - scipy raises QhullError for flat or tiny meshes

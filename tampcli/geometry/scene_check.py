@@ -1,0 +1,97 @@
+"""A Scene against its PDDL problem and modes: names, obstacles, missing geometry."""
+
+from __future__ import annotations
+
+import dataclasses
+
+from tampcli.errors import SceneError, source_line_at
+from tampcli.geometry.model import Body, Scene
+from tampcli.geometry.tomlsrc import TomlSource
+from tampcli.pddl import ast
+
+
+def pddl_objects(domain: ast.Domain | None, problem: ast.Problem) -> dict[str, tuple[str, ...]]:
+    """Object and constant names -> their types."""
+    names = {o.name: o.types for o in problem.objects}
+    if domain is not None:
+        for c in domain.constants:
+            names.setdefault(c.name, c.types)
+    return names
+
+
+def check_against_problem(src: TomlSource, scene: Scene, domain, problem) -> Scene:
+    objects = pddl_objects(domain, problem)
+    bodies = []
+    for i, b in enumerate(scene.bodies):
+        obstacle = b.name not in objects
+        if obstacle and not b.fixed:
+            raise src.error(f"{b.name!r} is no object of the PDDL problem; an obstacle must say "
+                            "`fixed = true`", "objects", i, "name", "objects.name")
+        bodies.append(_replace(b, obstacle=obstacle))
+    for i, r in enumerate(scene.regions):
+        if r.name not in objects:
+            raise src.error(f"region {r.name!r} is no object of the PDDL problem", "regions", i,
+                            "name", "regions.name")
+    return Scene(scene.path, scene.robot, tuple(bodies), scene.regions, scene.camera)
+
+
+def _replace(body: Body, **changes) -> Body:
+    return dataclasses.replace(body, **changes)
+
+
+def check_modes_against_scene(src: TomlSource | None, scene: Scene, modes, domain, problem):
+    """Every PDDL object a geometric action can take must have geometry in the scene.
+
+    For each role (`object`, `on`, `to`) of each geometric mode, the objects
+    of the parameter's type need a body or a region. Whether the geometry
+    fits the role (grasping a region, say) is left to the symbolic
+    preconditions and the optimizer.
+    """
+    objects = pddl_objects(domain, problem)
+    parents = _type_parents(domain)
+    for mode in modes.values():
+        if mode.kind == "none":
+            continue
+        action = domain.action(mode.action)
+        for role in ("object", "on", "to"):
+            param = getattr(mode, role)
+            if param is None:
+                continue
+            if param.startswith("?"):
+                types = next(p.types for p in action.params if p.name == param)
+                candidates = sorted(n for n, t in objects.items()
+                                    if any(_is_subtype(tt, types, parents) for tt in t))
+            else:
+                candidates = [param]
+            for name in candidates:
+                if scene.has_body(name) or scene.has_region(name):
+                    continue
+                where = f" ({modes.path}:{mode.line})" if mode.line else ""
+                message = (f"no object or region {name!r} in the scene, but action "
+                           f"{mode.action!r} may {mode.kind} it ({role} = {param!r}{where})")
+                line = src.line("objects") if src is not None else None
+                raise SceneError(message, path=scene.path, line=line or 1, key="objects",
+                                 source_line=source_line_at(src.text, line or 1)
+                                 if src is not None else None)
+
+
+def _type_parents(domain) -> dict[str, tuple[str, ...]]:
+    parents: dict[str, tuple[str, ...]] = {}
+    if domain is not None:
+        for t in domain.types:
+            parents[t.name] = tuple(x for x in t.types if x != t.name)
+    return parents
+
+
+def _is_subtype(t: str, wanted: tuple[str, ...], parents) -> bool:
+    seen = set()
+    stack = [t]
+    while stack:
+        cur = stack.pop()
+        if cur in wanted or "object" in wanted:
+            return True
+        if cur in seen:
+            continue
+        seen.add(cur)
+        stack.extend(parents.get(cur, ()))
+    return False
