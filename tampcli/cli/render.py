@@ -85,4 +85,4 @@ def _print_physics(ui, physics: dict) -> None:
 
 
 def _xyz(values) -> str:
-    return ", ".join(f"{v:.3f}" for v in values[:3])
+    return " ".join(f"{v:.3f}" for v in values[:3])
