@@ -42,17 +42,18 @@ class _ArgumentParser(argparse.ArgumentParser):
         raise InputError(message + f"\n  (see `{self.prog} --help`)", path=self.prog)
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = _ArgumentParser(prog="tampcli", description=__doc__.splitlines()[0])
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The argument parser; with `only`, just that command's module is imported."""
+    parser = _ArgumentParser(
+        prog="tampcli",
+        description="Optimization-based Task and Motion Planning from the command line.")
     parser.add_argument("--version", action="version", version=f"tampcli {__version__}")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_ArgumentParser)
     for name, module_name in COMMANDS.items():
-        try:
-            module = importlib.import_module(module_name)
-        except ModuleNotFoundError as err:
-            if err.name != module_name:
-                raise
+        if only is not None and name != only:
+            sub.add_parser(name, help=_HELP[name])
             continue
+        module = importlib.import_module(module_name)
         p = sub.add_parser(name, help=_HELP[name], description=_HELP[name])
         add_common(p)
         module.add_parser(p)
@@ -71,7 +72,8 @@ def main(argv: list[str] | None = None, ui: UI | None = None) -> int:
     ui = ui or UI()
     traceback_wanted = "--traceback" in argv
     try:
-        parser = build_parser()
+        command = next((a for a in argv if not a.startswith("-")), None)
+        parser = build_parser(command if command in COMMANDS else None)
         args = parser.parse_args(argv)
         if not getattr(args, "command", None):
             parser.print_help(ui.out.file)
