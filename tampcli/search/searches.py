@@ -99,7 +99,13 @@ Heuristic = Callable[[frozenset], float]
 
 def astar(task: Task, heuristic: Heuristic, limits: SearchLimits = SearchLimits(),
           weight: float = 1.0) -> SearchResult:
-    """A* (weight 1) or weighted A* (f = g + weight * h), goal test at expansion."""
+    """A* (weight 1) or weighted A* (f = g + weight * h), goal test at expansion.
+
+    Evaluation is deferred: a successor is queued with the bound its parent
+    gives, max(0, h(parent) - cost(op)) (admissible whenever h is), and only
+    evaluated when it reaches the front; if its own h raises its f it is
+    queued again. Most generated states are never evaluated.
+    """
     budget = _Budget(limits)
     init = task.init
     h0 = heuristic(init)
@@ -115,9 +121,21 @@ def astar(task: Task, heuristic: Heuristic, limits: SearchLimits = SearchLimits(
     pop, push = heapq.heappop, heapq.heappush
     successors, is_goal = task.successors, task.is_goal
     while open_list:
-        _, neg_g, _, state = pop(open_list)
+        f, neg_g, _, state = pop(open_list)
         gs = -neg_g
         if gs > g[state]:
+            continue
+        h = hcache.get(state)
+        if h is None:
+            h = heuristic(state)
+            budget.evaluated += 1
+            hcache[state] = h
+            if h == INF:
+                continue
+            if gs + weight * h > f:
+                push(open_list, (gs + weight * h, neg_g, next(counter), state))
+                continue
+        elif h == INF:
             continue
         if is_goal(state):
             return budget.result("solved", _path(parents, state))
@@ -130,16 +148,13 @@ def astar(task: Task, heuristic: Heuristic, limits: SearchLimits = SearchLimits(
             old = g.get(succ)
             if old is not None and old <= ng:
                 continue
-            h = hcache.get(succ)
-            if h is None:
-                h = heuristic(succ)
-                budget.evaluated += 1
-                hcache[succ] = h
-            if h == INF:
+            known = hcache.get(succ)
+            if known == INF:
                 continue
+            estimate = known if known is not None else max(h - op.cost, 0.0)
             g[succ] = ng
             parents[succ] = (state, op)
-            push(open_list, (ng + weight * h, -ng, next(counter), succ))
+            push(open_list, (ng + weight * estimate, -ng, next(counter), succ))
     return budget.result("unsolvable", reason="search space exhausted")
 
 

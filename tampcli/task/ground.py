@@ -79,7 +79,7 @@ class _Grounder:
             heads = [(lit.atom.predicate, lit.atom.args, tuple((p.name, p.types) for p in forall))
                      for lit, forall in _effect_literals(action.effect) if not lit.negated]
             action_rules.append(LiftedRule([(p.name, p.types) for p in action.params],
-                                           body, heads, equal))
+                                           body, heads, equal, f"action {action.name}"))
         axiom_rules = []
         for rule in self.rules:
             body, equal = [], []
@@ -92,7 +92,8 @@ class _Grounder:
                 elif lit.part.predicate == "=":
                     equal.append((lit.part.args[0], lit.part.args[1], False))
             axiom_rules.append(LiftedRule([(p.name, p.types) for p in rule.params], body,
-                                          [(rule.head.predicate, rule.head.args, ())], equal))
+                                          [(rule.head.predicate, rule.head.args, ())], equal,
+                                          f"derived predicate {rule.head.predicate}"))
         return action_rules, axiom_rules
 
     # ------------------------------------------------------------ the task

@@ -13,11 +13,18 @@ never enumerated, except for parameters no positive atom mentions.
 from __future__ import annotations
 
 import itertools
+import math
 from dataclasses import dataclass, field
 
+from tampcli.errors import UnsupportedFeatureError
 from tampcli.task.normalize import Types
 
 GroundAtom = tuple  # (predicate, args)
+
+# Parameters no positive precondition constrains are enumerated over their
+# types; past this many combinations for one partial binding, refuse rather
+# than run for hours.
+MAX_FREE_COMBINATIONS = 2_000_000
 
 
 @dataclass
@@ -28,6 +35,7 @@ class LiftedRule:
     body: list[tuple[str, tuple[str, ...]]]
     heads: list[tuple[str, tuple[str, ...], tuple]]
     equal: list[tuple[str, str, bool]] = field(default_factory=list)
+    name: str = ""
     bindings: set = field(default_factory=set)
     plans: list = field(default_factory=list)
 
@@ -68,6 +76,11 @@ def reachable(rules: list[LiftedRule], init: set[GroundAtom], types: Types) -> s
             if name in binding and not types.has_type(binding[name], ts):
                 return
         choices = [types.objects_of(ts) for _, ts in free]
+        if free and math.prod(len(c) for c in choices) > MAX_FREE_COMBINATIONS:
+            raise UnsupportedFeatureError(
+                f"{rule.name}: grounding would enumerate {math.prod(len(c) for c in choices):,} "
+                f"combinations of {', '.join(n for n, _ in free)}, which no positive precondition "
+                "constrains")
         for combo in itertools.product(*choices):
             full = dict(binding)
             full.update(zip((n for n, _ in free), combo, strict=True))

@@ -186,3 +186,12 @@ def test_odd_inputs_do_not_crash():
     plan = [by_name(make_task(CORRIDOR, corridor_problem(2)), "(move r0 r1)")]
     task = make_task(CORRIDOR, corridor_problem(2))
     assert task.is_goal(replay(task, plan))
+
+
+def test_unconstrained_parameters_past_the_limit_are_refused():
+    domain = """(define (domain wide) (:predicates (p ?a ?b ?c ?d ?e) (q))
+      (:action a :parameters (?a ?b ?c ?d ?e) :precondition (not (p ?a ?b ?c ?d ?e))
+        :effect (p ?a ?b ?c ?d ?e)))"""
+    objects = " ".join(f"o{i}" for i in range(30))
+    with pytest.raises(UnsupportedFeatureError, match="action a: grounding would enumerate 24,300,000"):
+        make_task(domain, f"(define (problem w) (:domain wide) (:objects {objects}) (:init) (:goal (q)))")
