@@ -146,7 +146,7 @@ def _top_k(task, args, ui):
     limited = topk_status == "limit" or (topk_status is None and out_of_time)
     stats = {"search": "topk", "plans": len(plans)}
     stats.update({k: v for k, v in (getattr(topk, "stats", None) or {}).items()
-                  if isinstance(v, (int, float, str))})
+                  if isinstance(v, (int, float)) and k != "plans"})
     if plans:
         reason = None
         if len(plans) < args.k:
