@@ -16,9 +16,11 @@ Pairs covered by `CollisionChecker.distances`:
   it slides on), and pairs whose distance q cannot change (base-group links
   vs fixed bodies) unless `static=True`.
 
-Broad phase: bounding spheres, then a certified lower bound (the gap of the
-two solids' projections on the line between their centres); a pair goes to
-FCL only when both are within `activation`. Distances are signed (negative
+Broad phase: world-aligned bounding boxes of all pairs at once, then a
+certified lower bound (the widest gap between the two solids' projections
+on the line between their centres and on the normals of a box's faces); a
+pair goes to the narrow phase (narrow.py: FCL, checked) only when both are
+within `activation`. Distances are signed (negative
 = penetration depth). `normal` points from a to b; `gradient` = d distance
 / d q = -normal . J_a(point_a) (+ normal . J_b(point_b) when b moves with q).
 """

@@ -1,10 +1,18 @@
-"""Inverse kinematics by damped least squares on the numpy chain, with restarts."""
+"""Inverse kinematics: damped least squares on the numpy chain, within joint limits.
+
+Levenberg-Marquardt steps on the pose error; a joint at a limit that the
+step would push further out is frozen for that step (its column removed),
+so the others take up the motion instead of the step being clipped away.
+Several seeds: the caller's, the start configuration, then random ones.
+"""
 
 from __future__ import annotations
 
 import numpy as np
 
 from tampcli.geometry import transforms
+
+MAX_STEP = 0.5  # rad (or m) per joint and iteration
 
 
 def pose_error(current: np.ndarray, target: np.ndarray) -> np.ndarray:
@@ -23,12 +31,11 @@ def solve_ik(world, target, seed, position_only, iterations, restarts, tolerance
     seeds.append(np.clip(world.start, lower, upper))
     finite_lo = np.where(np.isfinite(lower), lower, -np.pi)
     finite_hi = np.where(np.isfinite(upper), upper, np.pi)
-    for _ in range(restarts):
-        seeds.append(rng.uniform(finite_lo, finite_hi))
+    seeds.extend(rng.uniform(finite_lo, finite_hi) for _ in range(restarts))
     best_q, best_res = seeds[0], np.inf
     rows = slice(0, 3) if position_only else slice(0, 6)
     for q0 in seeds:
-        q, res = _dls(world, target, q0, rows, iterations, tolerance)
+        q, res = _levenberg_marquardt(world, target, q0, rows, iterations, tolerance)
         if res < best_res:
             best_q, best_res = q, res
         if best_res <= tolerance:
@@ -36,32 +43,43 @@ def solve_ik(world, target, seed, position_only, iterations, restarts, tolerance
     return best_q, float(best_res)
 
 
-def _dls(world, target, q, rows, iterations, tolerance):
+def _levenberg_marquardt(world, target, q, rows, iterations, tolerance):
     lower, upper = world.lower, world.upper
     chain, tool = world.chain, world._tool_index
-    damping = 1e-2
-    q = q.copy()
-    err = None
-    for _ in range(iterations):
+
+    def evaluate(q):
         frames = chain.fk_list(q)
-        err = pose_error(frames[tool], target)[rows]
-        norm = float(np.linalg.norm(err))
+        return frames, pose_error(frames[tool], target)[rows]
+
+    frames, err = evaluate(q)
+    norm = float(np.linalg.norm(err))
+    damping = 1e-2
+    stalled = 0
+    for _ in range(iterations):
         if norm <= tolerance:
-            return q, norm
+            break
         jac = np.vstack([chain.jacobian_from_frames(frames, tool, frames[tool][:3, 3]),
                          chain.angular_jacobian_from_frames(frames, tool)])[rows]
-        # Joints at a limit and pushed outward are frozen for this step.
-        step = jac.T @ np.linalg.solve(jac @ jac.T + damping**2 * np.eye(jac.shape[0]), err)
-        scale = min(1.0, 0.5 / max(np.max(np.abs(step)), 1e-12))
-        q_new = np.clip(q + scale * step, lower, upper)
-        frames_new = chain.fk_list(q_new)
-        new_norm = float(np.linalg.norm(pose_error(frames_new[tool], target)[rows]))
-        if new_norm < norm:
-            q = q_new
-            damping = max(damping * 0.5, 1e-4)
+        step = _step(jac, err, damping)
+        blocked = ((q <= lower + 1e-9) & (step < 0)) | ((q >= upper - 1e-9) & (step > 0))
+        if blocked.any():
+            jac[:, blocked] = 0.0
+            step = _step(jac, err, damping)
+        step *= min(1.0, MAX_STEP / max(float(np.max(np.abs(step))), 1e-12))
+        q_new = np.clip(q + step, lower, upper)
+        frames_new, err_new = evaluate(q_new)
+        norm_new = float(np.linalg.norm(err_new))
+        if norm_new < norm:
+            stalled = 0 if norm_new < 0.999 * norm else stalled + 1
+            q, frames, err, norm = q_new, frames_new, err_new, norm_new
+            damping = max(damping * 0.3, 1e-5)
         else:
-            damping = min(damping * 4.0, 1.0)
-            if damping >= 1.0 and new_norm >= norm:
-                break
-    frames = chain.fk_list(q)
-    return q, float(np.linalg.norm(pose_error(frames[tool], target)[rows]))
+            stalled += 1
+            damping *= 5.0
+        if stalled >= 12 or damping > 1e3:
+            break  # a local minimum (often a joint limit): let another seed try
+    return q, norm
+
+
+def _step(jac: np.ndarray, err: np.ndarray, damping: float) -> np.ndarray:
+    return jac.T @ np.linalg.solve(jac @ jac.T + damping**2 * np.eye(jac.shape[0]), err)

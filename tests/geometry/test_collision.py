@@ -169,9 +169,8 @@ def test_held_object_contacts_and_gradient(panda):
     numeric, smooth = _finite_difference(checker, q, table, held=("a", grasp))
     assert smooth
     np.testing.assert_allclose(table.gradient, numeric, atol=1e-4)
-    # The held cube's centre is the tool point: its lowest corner is 0.0354 m below it.
-    tool_z = world.tool_pose(q)[2, 3]
-    assert table.distance == pytest.approx(tool_z - 0.025 * np.sqrt(2) * 0 - 0.025, abs=0.02)
+    # Tool pointing down, cube centred on the tool point: its bottom face is 2.5 cm lower.
+    assert table.distance == pytest.approx(world.tool_pose(q)[2, 3] - 0.025, abs=0.01)
 
 
 def test_self_collision_pairs_exclude_adjacent_links(panda):

@@ -132,13 +132,15 @@ def test_point_jacobian_matches_pybullet(panda):
         panda.set_state(panda.start)
 
 
-def test_ik_reaches_reachable_targets(panda):
-    for q in _random_qs(panda, 6, seed=7):
-        target = panda.tool_pose(q)
-        solution, residual = panda.ik(target, seed=panda.start)
-        assert residual < 1e-4
-        np.testing.assert_allclose(panda.tool_pose(solution), target, atol=1e-3)
-        assert np.all(solution >= panda.lower - 1e-12) and np.all(solution <= panda.upper + 1e-12)
+@pytest.mark.parametrize(("name", "count"), [("panda", 40), ("kuka", 15)])
+def test_ik_reaches_reachable_targets(name, count, request):
+    world = request.getfixturevalue(name)
+    for k, q in enumerate(_random_qs(world, count, seed=7)):
+        target = world.tool_pose(q)
+        solution, residual = world.ik(target, rng_seed=k)
+        assert residual < 1e-4, k
+        np.testing.assert_allclose(world.tool_pose(solution), target, atol=1e-3)
+        assert np.all(solution >= world.lower) and np.all(solution <= world.upper)
 
 
 def test_ik_reports_unreachable_target(panda):
