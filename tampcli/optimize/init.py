@@ -23,7 +23,12 @@ QUARTERS = (0.0, 0.5 * math.pi, math.pi, -0.5 * math.pi)
 
 
 def final_guess(problem: TrajectoryProblem, warm: dict | None = None):
-    """(x, y, yaw) per placement block: region centre / support centre, current yaw."""
+    """(x, y, yaw) per placement block, and the point each is pulled towards.
+
+    The pull is to the middle of the target (region centre, support centre):
+    away from rims and from clutter around the target, and a well-posed NLP
+    when the target has room to spare.
+    """
     vals, origins = {}, {}
     where = {n: np.array(i.pose[:2]) for n, i in problem.bodies.items()}
     yaw = {n: i.pose[3] for n, i in problem.bodies.items()}
@@ -32,12 +37,12 @@ def final_guess(problem: TrajectoryProblem, warm: dict | None = None):
         if step.kind not in ("place", "push"):
             continue
         block = f"p{step.index}"
-        origins[block] = where[step.obj].copy()
+        target = (np.asarray(regions[step.target].center, dtype=float)
+                  if step.target in regions else where[step.target].copy())
+        origins[block] = target
         if warm and block in warm:
             vals[block] = np.array(warm[block], dtype=float)
         else:
-            target = (np.asarray(regions[step.target].center) if step.target in regions
-                      else where[step.target])
             vals[block] = np.array([target[0], target[1], yaw[step.obj]])
         where[step.obj] = vals[block][:2].copy()
         yaw[step.obj] = float(vals[block][2])
@@ -57,12 +62,18 @@ def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng):
         q, res = world.ik(target, seed=q_prev, rng_seed=int(rng.integers(1 << 30)))
         return q, res
 
-    def best_of(targets):
-        """IK for each (target, tag); the reachable one closest to q_prev."""
+    def best_of(targets, held=None, ignore=frozenset()):
+        """IK for each (target, tag): reachable first, then clear, then closest to q_prev."""
         best = None
         for target, tag in targets:
             q, res = solve_ik(target)
-            score = (res > IK_TOLERANCE, float(np.linalg.norm(q - q_prev)))
+            clash = False
+            if problem.checker is not None and len(targets) > 1:
+                moved = {n: t for n, t in poses.items() if n not in (held or ("",))[0:1]}
+                clash = problem.checker.min_distance(
+                    q, moved, held, frozenset(ignore), static=False,
+                    horizon=problem.options.margin) < problem.options.margin
+            score = (res > IK_TOLERANCE, clash, float(np.linalg.norm(q - q_prev)))
             if best is None or score < best[0]:
                 best = (score, q, tag)
         return best[1], best[2]
@@ -92,7 +103,7 @@ def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng):
                     choices[f"psi{step.index}"] = psi
                     grip = grip_of(problem, step, choices)
                     targets.append((obj_pose @ _inv(grip.matrix(0.0)), psi))
-                q, psi = best_of(targets)
+                q, psi = best_of(targets, ignore={step.obj})
                 choices[f"psi{step.index}"] = psi
             vals[f"k{k}"] = q
             q_prev = q
@@ -106,11 +117,9 @@ def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng):
                 q = _planar_q(np.array([x, y, step.rest_z]), grip, phi)
                 P = pose_matrix(x, y, step.rest_z, yaw)
             else:
-                info = problem.bodies[step.obj]
-                turns = (0.0, math.pi) if not info.disk else QUARTERS
                 targets = [(pose_matrix(x, y, step.rest_z, yaw + d) @ _inv(grip.matrix(0.0)),
-                            yaw + d) for d in turns]
-                q, yaw_ = best_of(targets)
+                            yaw + d) for d in QUARTERS]
+                q, yaw_ = best_of(targets, (step.obj, grip.matrix(0.0)), {step.support})
                 P = pose_matrix(x, y, step.rest_z, yaw_)
             poses[step.obj] = P
             vals[f"k{k}"] = q

@@ -78,7 +78,7 @@ def nlp_feasible(evaluate, layout, x) -> bool:
 
 
 def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float,
-              ftol: float = 1e-8) -> NlpOutcome:
+              ftol: float = 1e-6) -> NlpOutcome:
     ev = _Evaluator(evaluate, layout)
     x0 = np.clip(np.asarray(x0, dtype=float), [b[0] for b in bounds], [b[1] for b in bounds])
     history: list[float] = []

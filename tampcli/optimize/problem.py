@@ -22,7 +22,7 @@ from tampcli.optimize.options import OptimizeOptions
 
 GEOMETRIC = ("grasp", "place", "push", "move")
 PANDA_OPENING = 0.08  # m, fingers fully open
-PANDA_FINGER_DEPTH = 0.025  # m, grasp point below the object's top
+PANDA_FINGER_DEPTH = 0.015  # m, grasp point below the object's top (fingertips ~7 mm lower)
 PUSH_STANDOFF = 0.012  # m, tool origin to the pushed face (finger half thickness)
 
 

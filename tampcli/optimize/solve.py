@@ -27,7 +27,8 @@ from tampcli.optimize.result import STAGES, TrajectoryResult
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
 
 GRIP_BOUND = 4 * math.pi
-SCREEN = 0.15  # m: samples further than this from everything get no collision rows
+LAZY_BAND = 0.005  # m: a point between waypoints this close to violating gets its rows
+LAZY_ROUNDS = 3
 
 
 class _Run:
@@ -252,11 +253,13 @@ def _phase_label(problem, k) -> str:
 
 
 def _solve_phase(run: _Run, ctx, T, checks):
-    """Coarse (waypoints only), then, if a point between waypoints is too close, fine.
+    """Coarse (waypoints only), then lazily add the points between waypoints that need it.
 
-    The fine NLP keeps rows only for the samples within SCREEN of something at
-    the coarse solution (the rest stay far during a local solve), and is
-    redone with every sample if the answer fails the full check.
+    The rows of a point between waypoints are added once it comes within
+    margin + LAZY_BAND of something (most never do: a collision query per point
+    per evaluation is what the path NLP spends its time on); each round checks
+    every point and adds the new offenders, so the answer is feasible at every
+    sample point or reported as not.
     """
     problem = run.problem
     m = problem.motions[ctx.index]
@@ -273,19 +276,23 @@ def _solve_phase(run: _Run, ctx, T, checks):
     bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
                       strict=True))
     coarse, layout = rows(0)
-    first = run.nlp(coarse, layout, x0, bounds)
-    if checks == 0 or first.status != "solved":
-        return first
-    clearance = sample_clearance(problem, m, ctx.q_a, ctx.q_b, first.x, ctx.held, ctx.moved,
-                                 run.checker, T, checks, SCREEN)
+    out = run.nlp(coarse, layout, x0, bounds)
+    if checks == 0:
+        return out
     margin = problem.options.margin
-    if min(clearance.values()) >= margin - FEASIBILITY:
-        # Same cost, more constraints: a coarse optimum feasible for the fine
-        # sampling is the fine optimum.
-        return first
-    near = {tau for tau, d in clearance.items() if d < SCREEN}
-    screened, _ = rows(checks, lambda tau: tau in near or tau == int(tau))
-    out = run.nlp(screened, layout, first.x, bounds)
+    kept: set[float] = set()
+    for _ in range(LAZY_ROUNDS):
+        if out.status != "solved":
+            return out
+        clearance = sample_clearance(problem, m, ctx.q_a, ctx.q_b, out.x, ctx.held, ctx.moved,
+                                     run.checker, T, checks, margin + LAZY_BAND)
+        if min(clearance.values()) >= margin - FEASIBILITY:
+            # Same cost, more constraints: an optimum with fewer rows that satisfies
+            # all of them is an optimum of the full NLP.
+            return out
+        kept |= {tau for tau, d in clearance.items() if d < margin + LAZY_BAND}
+        lazy, _ = rows(checks, lambda tau, kept=frozenset(kept): tau == int(tau) or tau in kept)
+        out = run.nlp(lazy, layout, out.x, bounds)
     full, _ = rows(checks)
     if out.status != "solved" or nlp_feasible(full, layout, out.x):
         return out

@@ -39,13 +39,18 @@ def keyframe_layout(problem: TrajectoryProblem) -> Layout:
     return Layout(tuple(blocks))
 
 
-def _start_state(problem) -> dict[str, PoseX]:
-    return {name: constant_pose(*info.pose) for name, info in problem.bodies.items()
-            if not info.fixed}
+def _start_state(problem) -> tuple[dict[str, PoseX], dict[str, float]]:
+    movable = {n: i for n, i in problem.bodies.items() if not i.fixed}
+    return ({n: constant_pose(*i.pose) for n, i in movable.items()},
+            {n: i.pose[2] for n, i in movable.items()})
 
 
-def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict) -> None:
-    """Where a released or pushed object ends: inside its region / on its body, apart."""
+def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: dict) -> None:
+    """Where a released or pushed object ends: inside its region / on its body, apart.
+
+    `heights`: the resting height of every movable object (from the stack below it,
+    not from x, so the set of rows does not change between evaluations).
+    """
     info = problem.bodies[step.obj]
     name = step.name
     regions = {r.name: r for r in problem.scene.regions}
@@ -60,7 +65,7 @@ def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict) -> None:
         if other in (step.obj, step.support):
             continue
         oinfo = problem.bodies[other]
-        if vertical_overlap(z, info.half[2], float(Q.pos[2]), oinfo.half[2]):
+        if vertical_overlap(z, info.half[2], heights[other], oinfo.half[2]):
             C.apart_disks(rows.ineq, name, P, info.radius, Q, oinfo.radius, other)
     for other, oinfo in problem.bodies.items():
         if oinfo.fixed and other != step.support and vertical_overlap(
@@ -70,9 +75,9 @@ def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict) -> None:
 
 
 def final_rows(problem: TrajectoryProblem, vals: dict, origins: dict) -> Rows:
-    """`origins`: block -> (x, y) the cost pulls towards (where the object was)."""
+    """`origins`: block -> (x, y) the cost pulls towards (the target's middle)."""
     rows = Rows()
-    state = _start_state(problem)
+    state, heights = _start_state(problem)
     centre, reach = reach_of(problem)
     for step in problem.steps:
         if step.kind == "grasp":
@@ -81,10 +86,11 @@ def final_rows(problem: TrajectoryProblem, vals: dict, origins: dict) -> Rows:
             block = f"p{step.index}"
             x, y, yaw = vals[block]
             P = planar_pose(block, x, y, step.rest_z, yaw)
-            _placement_rows(rows, problem, step, P, state)
+            _placement_rows(rows, problem, step, P, state, heights)
             if np.isfinite(reach):
                 C.within_reach(rows.ineq, step.name, P, centre, reach)
             state[step.obj] = P
+            heights[step.obj] = step.rest_z
             d = np.array([x, y]) - origins[block]
             rows.cost += 1e-2 * float(d @ d)
             rows.cost_grad[block] = np.array([2e-2 * d[0], 2e-2 * d[1], 0.0])
@@ -95,7 +101,7 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
                   start: np.ndarray, collisions: bool = True) -> Rows:
     rows = Rows()
     opts = problem.options
-    state = _start_state(problem)
+    state, heights = _start_state(problem)
     held = None  # (name, grip step)
     planar = problem.planar
     bodies = list(problem.bodies)
@@ -135,9 +141,10 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
             if not planar:
                 C.upright(rows.eq, step.name, H, step.obj)
                 C.rest_height(rows.eq, step.name, H, step.rest_z, step.support)
-            _placement_rows(rows, problem, step, H, state)
+            _placement_rows(rows, problem, step, H, state, heights)
             collide(k, step, held_of(step.obj, grip, t, t_block), frame, {step.support})
             state[step.obj] = H
+            heights[step.obj] = step.rest_z
             held = None
         elif step.kind == "push":
             k0, k1 = step.keyframes
@@ -151,7 +158,7 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
                 C.upright(rows.eq, step.name, H1, step.obj)
                 C.rest_height(rows.eq, step.name, H1, step.rest_z, step.support)
             state.pop(step.obj)
-            _placement_rows(rows, problem, step, H1, state)
+            _placement_rows(rows, problem, step, H1, state, heights)
             collide(k1, step, held_of(step.obj, grip, t, t_block), frame, {step.support})
             state[step.obj] = H1
         elif step.kind == "move":
