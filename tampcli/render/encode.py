@@ -40,6 +40,9 @@ class Mp4Writer:
 class GifWriter:
     """Palette frames kept in memory (a third of RGB), written at close.
 
+    One palette for the whole video, taken from the first frame (every body is
+    in view from the start): per-frame palettes make flat surfaces flicker.
+
     GIF delays are in hundredths of a second, and viewers (and Pillow) merge
     identical consecutive frames, so a GIF read back may hold fewer frames than
     were appended; its total duration is preserved.
@@ -49,11 +52,16 @@ class GifWriter:
         self.path = str(path)
         self.delay_ms = max(20, int(round(100.0 / fps)) * 10)
         self._frames: list[Image.Image] = []
+        self._palette: Image.Image | None = None
         self.frames = 0
 
     def append(self, frame: np.ndarray) -> None:
-        image = Image.fromarray(frame).quantize(colors=255, method=Image.Quantize.FASTOCTREE)
-        self._frames.append(image)
+        image = Image.fromarray(frame)
+        if self._palette is None:
+            self._palette = image.quantize(colors=255, method=Image.Quantize.MEDIANCUT)
+        # the first frame too goes through the palette lookup (which is coarser
+        # than the palette itself), so no colour shifts after frame 0
+        self._frames.append(image.quantize(palette=self._palette, dither=Image.Dither.NONE))
         self.frames += 1
 
     def close(self) -> None:

@@ -73,6 +73,8 @@ def test_gif(planar_json, tmp_path):
             total += gif.info["duration"]
     assert total == pytest.approx(report["frames"] * 1000 / 8, rel=0.1)
     assert np.abs(frames[0].astype(int) - frames[-1]).mean() > 0.5
+    # one palette for all frames: the empty background keeps its colour
+    assert len({tuple(f[0, 0]) for f in frames}) == 1
 
 
 def test_keyframe_strip_has_a_panel_per_geometric_action(panda_json, tmp_path):
