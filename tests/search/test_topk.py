@@ -327,3 +327,14 @@ def test_landmark_cut_values_and_successor_bounds_are_admissible(domain, problem
         h, found = cache[s]
         bound = h - sum(m for m, ops in found if index[id(op)] in ops)
         assert bound <= dist[t] + 1e-9
+
+
+def test_initial_state_already_a_goal_gives_the_empty_plan_first():
+    dom = parser.parse_domain(TOY_DOMAIN)
+    prob = parser.parse_problem(TOY_PROBLEM.replace("(:goal (done))", "(:goal (at n0))"))
+    task = ground(dom, prob)
+    for loopless in (False, True):
+        plans = list(itertools.islice(TopK(task, loopless=loopless), 5))
+        assert plans[0].operators == () and plans[0].cost == 0
+        reference = all_plans(task, plans[-1].cost, loopless, max_len=10)
+        assert [p.cost for p in plans] == [c for c, _ in reference][:5]
