@@ -61,7 +61,9 @@ def located_error(scene, src, key: str, subject: str, message: str) -> SceneErro
         index = next(i for i, b in enumerate(scene.bodies) if b.name == subject)
         line = src.line("objects", index, "pose") if src else scene.bodies[index].line
     elif src is not None:
-        line = src.line("robot", 0, "start")
+        # The planar robot starts at its base unless `start` is given.
+        given = ("robot", 0, "start") in src.lines
+        line = src.line("robot", 0, "start" if given else "base")
     else:
         line = scene.robot.line
     text = src.text if src is not None else None

@@ -58,3 +58,41 @@ def test_scene_errors_are_scene_errors(tmp_path, domain, problem):
     with pytest.raises(SceneError) as info:
         load_scene(bad, domain, problem)
     assert info.value.line == 6 and info.value.key == "objects.size"
+
+
+@pytest.mark.parametrize(("sink", "refused"), [(0.0, False), (0.002, False), (0.006, True)])
+def test_resting_contact_is_not_overlap(tmp_path, domain, problem, sink, refused):
+    """Cube `a` rests on the table, sunk by `sink` metres: a few mm of slack are allowed."""
+    text = (DATA / "p01.scene.toml").read_text().replace(
+        "pose = [0.45, -0.2, 0.025, 0.3]", f"pose = [0.45, -0.2, {0.025 - sink}, 0.3]")
+    path = tmp_path / "p01.scene.toml"
+    path.write_text(text)
+    if not refused:
+        load_scene(path, domain, problem)
+        return
+    with pytest.raises(SceneError) as info:
+        load_scene(path, domain, problem)
+    assert info.value.key == "objects.pose" and "overlaps 'table'" in info.value.message
+    assert info.value.line == text.splitlines().index(
+        f"pose = [0.45, -0.2, {0.025 - sink}, 0.3]") + 1
+
+
+def test_planar_robot_scene(tmp_path, domain, problem):
+    path = tmp_path / "planar.scene.toml"
+    path.write_text(
+        '[robot]\nmodel = "planar"\nbase = [0.0, 0.0, 0.025]\nradius = 0.04\n'
+        '[[objects]]\nname = "table"\nshape = "box"\nsize = [2.0, 2.0, 0.02]\n'
+        'pose = [0.0, 0.0, -0.01]\nfixed = true\n'
+        '[[objects]]\nname = "a"\nshape = "cylinder"\nsize = [0.03, 0.05]\n'
+        'pose = [0.3, 0.3, 0.025]\n'
+        '[[objects]]\nname = "b"\nshape = "sphere"\nsize = [0.025]\npose = [-0.3, 0.3, 0.025]\n'
+        '[[regions]]\nname = "goal"\non = "table"\ncenter = [0.5, -0.5]\nsize = [0.2, 0.2]\n')
+    scene = load_scene(path, domain, problem)
+    assert scene.robot.model == "planar" and scene.robot.radius == 0.04
+    # Starting inside the cylinder is a collision at the start.
+    path.write_text(path.read_text().replace("base = [0.0, 0.0, 0.025]",
+                                             "base = [0.3, 0.3, 0.025]"))
+    with pytest.raises(SceneError) as info:
+        load_scene(path, domain, problem)
+    assert info.value.key == "robot.start" and "planar_body" in info.value.message
+    assert info.value.source_line == "base = [0.3, 0.3, 0.025]"
