@@ -90,6 +90,20 @@ def _pddl_files(folder: Path) -> list[Path]:
     return [p for p in found if p.is_file()]
 
 
+def largest_first(jobs: list[Job]) -> list[Job]:
+    """Jobs in decreasing problem-file size: bigger problems tend to run longer,
+    and starting the long ones first keeps every job slot busy to the end
+    instead of leaving one slot idle while the last long problem runs."""
+
+    def size(job: Job) -> int:
+        try:
+            return os.path.getsize(job.problem)
+        except OSError:
+            return 0
+
+    return sorted(jobs, key=size, reverse=True)
+
+
 def domain_label(domain: str | None, problem: str) -> str:
     """The name a summary row goes by: the domain file's folder (else the problem's)."""
     return Path(domain or problem).resolve().parent.name

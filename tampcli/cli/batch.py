@@ -13,7 +13,7 @@ import signal
 import threading
 from collections import Counter
 
-from tampcli.batch.discover import discover
+from tampcli.batch.discover import discover, largest_first
 from tampcli.batch.results import STATUSES, Result, ResultsFile
 from tampcli.batch.runner import PROG, RunOptions
 from tampcli.batch.summary import summarize, table, write_csv
@@ -73,7 +73,7 @@ def run(args, ui) -> int:
             ui.warn(f"{args.out}: cut a torn last line ({results.repaired_bytes} bytes) left "
                     "by an interrupted batch; that problem runs again")
         done = results.done()
-        todo = [job for job in jobs if job.key not in done]
+        todo = largest_first([job for job in jobs if job.key not in done])
         if len(todo) < len(jobs):
             ui.info(f"resuming {args.out}: {len(jobs) - len(todo)} of {len(jobs)} problems "
                     "already recorded")

@@ -3,7 +3,13 @@ from pathlib import Path
 
 import pytest
 
-from tampcli.batch.discover import discover, domain_candidates, find_domain, is_domain_file
+from tampcli.batch.discover import (
+    discover,
+    domain_candidates,
+    find_domain,
+    is_domain_file,
+    largest_first,
+)
 from tampcli.errors import UsageError
 
 from .common import GRIPPER_DOMAIN, GRIPPER_P01, IPC, ROOT
@@ -107,3 +113,12 @@ def test_hidden_folders_are_not_searched(tmp_path):
     shutil.copy(GRIPPER_P01, tmp_path / "P1.PDDL")
     jobs = discover([str(tmp_path)])
     assert [Path(job.problem).name for job in jobs] == ["P1.PDDL"]
+
+
+def test_largest_problems_are_run_first():
+    jobs = discover([str(IPC / "gripper")])
+    ordered = largest_first(jobs)
+    sizes = [Path(job.problem).stat().st_size for job in ordered]
+    assert sizes == sorted(sizes, reverse=True)
+    assert Path(ordered[0].problem).name == "prob20.pddl"
+    assert sorted(ordered, key=lambda j: j.problem) == sorted(jobs, key=lambda j: j.problem)
