@@ -10,7 +10,10 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import hashlib
+import os
 import re
+import sys
 from pathlib import Path
 
 from lark import Lark, Token, Transformer
@@ -43,9 +46,34 @@ _TOKEN_NAMES = {
 
 @functools.lru_cache(maxsize=1)
 def _lark() -> Lark:
+    return build_lark(_cache_file())
+
+
+def build_lark(cache: str | bool = False) -> Lark:
+    """The parser; with `cache`, lark's tables are kept in that file (10x faster to load)."""
     grammar = (Path(__file__).with_name("grammar.lark")).read_text()
     return Lark(grammar, parser="lalr", lexer=PDDLLexer, maybe_placeholders=False,
-                transformer=_Builder())
+                transformer=_Builder(), cache=cache)
+
+
+def _cache_file() -> str | bool:
+    """A file in the user's own cache folder, named after the grammar.
+
+    Not lark's default (a shared temporary folder): the cache is a pickle,
+    which nobody else should be able to write. Lark checks the grammar's
+    hash when loading and rebuilds on any mismatch or unreadable file.
+    """
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    grammar = (Path(__file__).with_name("grammar.lark")).read_bytes()
+    digest = hashlib.sha256(grammar).hexdigest()[:16]
+    folder = Path(base) / "tampcli"
+    try:
+        folder.mkdir(parents=True, exist_ok=True, mode=0o700)
+    except OSError:
+        return False
+    if not os.access(folder, os.W_OK):
+        return False
+    return str(folder / f"grammar-{digest}-py{sys.version_info[0]}{sys.version_info[1]}.lark")
 
 
 def parse_domain(text: str, path: str | None = None) -> ast.Domain:

@@ -108,3 +108,15 @@ def test_empty_file_is_a_located_error():
     with pytest.raises(PDDLSyntaxError) as err:
         parser.parse("", "empty.pddl")
     assert err.value.line == 1 and err.value.column == 1
+
+
+def test_cached_tables_parse_like_fresh_ones(tmp_path):
+    cache = tmp_path / "grammar.lark-cache"
+    fresh = parser.build_lark(False).parse(DOMAIN)
+    written = parser.build_lark(str(cache)).parse(DOMAIN)
+    assert cache.stat().st_size > 0
+    loaded = parser.build_lark(str(cache)).parse(DOMAIN)
+    assert fresh == written == loaded
+    assert ast.Span(1, 1, 9, 49) == loaded.span == fresh.span
+    cache.write_bytes(b"garbage\n")  # a broken cache is rebuilt, not an error
+    assert parser.build_lark(str(cache)).parse(DOMAIN) == fresh
