@@ -1,8 +1,10 @@
 import json
+import subprocess
+import sys
 
 import pytest
 
-from tests.conftest import IPC
+from tests.conftest import IPC, ROOT
 
 GRIPPER = IPC / "gripper" / "domain.pddl"
 GRIPPER1 = IPC / "gripper" / "prob01.pddl"
@@ -109,3 +111,40 @@ def test_bad_solution_json_exits_2(cli, plan_file, content, where):
     assert run.code == 2, run.out
     assert where in run.err
     assert "Traceback" not in run.err
+
+
+PLANAR = ROOT / "domains" / "planar-tamp" / "domain.pddl"
+PLANAR1 = ROOT / "problems" / "planar-tamp" / "p01.pddl"
+
+
+@pytest.fixture(scope="module")
+def solved(tmp_path_factory):
+    """A real solution.json of a geometric problem, made by `tampcli solve`."""
+    out = tmp_path_factory.mktemp("solve") / "p01.json"
+    subprocess.run([sys.executable, "-m", "tampcli", "solve", str(PLANAR), str(PLANAR1),
+                    "--out", str(out), "--time-limit", "120", "--quiet"],
+                   check=True, capture_output=True, timeout=300, cwd=ROOT)
+    data = json.loads(out.read_text())
+    assert data["status"] == "solved"
+    data["scene"] = str((ROOT / data["scene"]).resolve())
+    out.write_text(json.dumps(data))
+    return out, data
+
+
+def test_geometric_solution_is_valid(cli, solved):
+    path, _ = solved
+    run = cli("validate", "--json", PLANAR, PLANAR1, path)
+    data = json.loads(run.out)
+    assert run.code == 0, run.out
+    assert data["geometry"] == "checked" and data["violations"] == []
+
+
+def test_geometric_violation_is_listed(cli, solved, tmp_path):
+    _, data = solved
+    data = dict(data, trajectory=[list(q) for q in data["trajectory"]])
+    data["trajectory"][5] = [5.0, 5.0]  # far outside the workspace
+    bad = tmp_path / "bad.json"
+    bad.write_text(json.dumps(data))
+    run = cli("validate", PLANAR, PLANAR1, bad)
+    assert run.code == 1
+    assert "waypoint 5" in run.out

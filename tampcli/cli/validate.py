@@ -8,8 +8,12 @@ symbolically, then its trajectory geometrically when the geometric verifier
 
 from __future__ import annotations
 
+import contextlib
+import ctypes
 import importlib
 import json
+import os
+import sys
 from pathlib import Path
 
 from tampcli.errors import ExitCode, SolutionFileError, source_line_at
@@ -84,7 +88,30 @@ def _geometric_violations(path, domain, problem) -> tuple[str, list[str]]:
         if err.name not in ("tampcli.optimize", "tampcli.optimize.verify"):
             raise
         return "unavailable", []
-    return "checked", list(verify.verify_solution_file(Path(path), domain, problem))
+    with _c_stdout_to_stderr():
+        found = list(verify.verify_solution_file(Path(path), domain, problem))
+    return "checked", found
+
+
+@contextlib.contextmanager
+def _c_stdout_to_stderr():
+    """PyBullet prints a banner on the C-level stdout, which would corrupt --json."""
+    sys.stdout.flush()
+    try:
+        saved = os.dup(1)
+    except OSError:  # no real file descriptor 1: nothing to protect
+        yield
+        return
+    os.dup2(2, 1)
+    try:
+        yield
+    finally:
+        try:
+            ctypes.CDLL(None).fflush(None)
+        except (OSError, AttributeError):
+            pass
+        os.dup2(saved, 1)
+        os.close(saved)
 
 
 def _number(x: float) -> str:
