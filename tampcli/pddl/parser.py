@@ -181,7 +181,10 @@ def _syntax_error(err: UnexpectedInput, text: str, path: str | None) -> InputErr
             "unexpected end of file (unbalanced parentheses?)", path, line, column,
             source_line_at(text, line), tuple(sorted({_describe_terminal(t) for t in expected})))
     if isinstance(err, UnexpectedToken):
-        expected = err.accepts or err.expected
+        try:
+            expected = err.accepts or err.expected
+        except _LocatedError:  # trying the alternatives ran into a refused feature
+            expected = err.expected
     else:
         expected = err.allowed or ()
     found = _describe_found(err, text)
@@ -189,8 +192,31 @@ def _syntax_error(err: UnexpectedInput, text: str, path: str | None) -> InputErr
     message = f"unexpected {found}"
     if set(expected) == {"$END"}:
         message += ' after the end of the definition (a ")" too many before it?)'
+    misplaced = _misplaced_keyword(err)
+    if misplaced:
+        line, column, word = misplaced
+        return PDDLSyntaxError(f"`{word}` is not allowed here", path, line, column,
+                               source_line_at(text, line))
     return PDDLSyntaxError(message, path, err.line, err.column,
                            source_line_at(text, err.line), described)
+
+
+# Words that open a formula or an effect; where the grammar has no place for
+# them the lexer reads them as names, and the error comes a token later.
+_CONNECTIVES = frozenset({"and", "or", "not", "imply", "exists", "forall", "when", "either",
+                          "increase", "decrease", "assign", "scale-up", "scale-down"})
+
+
+def _misplaced_keyword(err: UnexpectedInput) -> tuple[int, int, str] | None:
+    """`(or` in an effect, `(when` in a condition...: where the keyword is."""
+    stack = getattr(getattr(err, "state", None), "value_stack", None) or ()
+    if len(stack) < 2:
+        return None
+    lpar, word = stack[-2], stack[-1]
+    if (isinstance(lpar, Token) and lpar.type == "LPAR" and isinstance(word, Token)
+            and word.type == "NAME" and word.value in _CONNECTIVES):
+        return word.line, word.column, word.value
+    return None
 
 
 _REFUSED = {

@@ -20,6 +20,7 @@ CATALOG = [
     ("syn-missing-define.pddl", "syntax", 1, 2, 'unexpected "domain"'),
     ("syn-action-without-name.pddl", "syntax", 3, 12, 'unexpected ":parameters"'),
     ("syn-effect-before-parameters.pddl", "syntax", 5, 5, 'unexpected ":parameters"'),
+    ("syn-or-in-effect.pddl", "syntax", 6, 19, "`or` is not allowed here"),
     ("syn-too-deep.pddl", "syntax", 3, 1313, "nesting deeper than 256 levels"),
     ("not-utf8.pddl", "input", 3, 6, "not UTF-8"),
     ("prob-as-domain.pddl", "input", 1, 1, "expected a domain definition"),
