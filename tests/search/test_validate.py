@@ -146,7 +146,7 @@ def mutations(plan: list[str], objects: list[str]):
 
 # unified-planning takes about a second per plan: two domains in the fast suite
 MUTATION_CASES = [pytest.param(d, i, id=f"{d}-{i + 1}",
-                               marks=() if (i == 0 and d in ("blocks", "miconic-fulladl",
+                               marks=() if (i == 0 and d in ("miconic-fulladl",
                                                              "psr-large"))
                                else pytest.mark.slow)
                   for d in DOMAINS for i in range(3)]
