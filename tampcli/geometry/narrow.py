@@ -133,15 +133,16 @@ _WORLD_AXES = np.vstack([np.eye(3), -np.eye(3)])
 
 def separation_bound(a: Placed, b: Placed) -> float:
     """A lower bound on the distance: the widest gap between the solids' projections
-    on the centre line and on the face normals of a box among them."""
+    on the centre line and on the axes of box and mesh frames."""
     axis = b.pos - a.pos
     norm = math.sqrt(float(axis @ axis))
     if norm <= 1e-9:
         return -math.inf
     dirs = [axis / norm]
     for placed in (a, b):
-        if placed.shape.kind == "box":
-            # Each face normal, turned to point from a towards b.
+        if placed.shape.kind in ("box", "convex"):
+            # Each axis of the solid's frame (a box's face normals; a mesh's
+            # frame, in which links are long and thin), turned to point from a to b.
             rot = placed.rot
             signs = np.sign(rot.T @ axis)
             dirs.extend((rot * np.where(signs == 0, 1.0, signs)).T)

@@ -1,7 +1,7 @@
 """Pose helpers: 4x4 homogeneous matrices <-> [x, y, z, qx, qy, qz, qw].
 
-Quaternions are (x, y, z, w) everywhere in tampcli, as in PyBullet; FCL's
-(w, x, y, z) order never leaves `collision.py`.
+Quaternions are (x, y, z, w) everywhere in tampcli, as in PyBullet. FCL,
+whose quaternions are (w, x, y, z), is only ever given rotation matrices.
 """
 
 from __future__ import annotations
