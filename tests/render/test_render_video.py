@@ -95,7 +95,7 @@ def test_relative_paths_are_found_beside_the_solution(relative_copy, tmp_path, m
 
 
 def test_scene_camera_is_used(tmp_path):
-    from render_solutions import PANDA, panda_solution
+    from render_solutions import panda_solution
 
     from tampcli import solution as solution_file
 
@@ -103,7 +103,6 @@ def test_scene_camera_is_used(tmp_path):
     solution_file.write(panda_solution(scene="p02.scene.toml", problem="p02.pddl"), path)
     report = render_solution(path, None, RenderOptions(**SMALL), keyframes=tmp_path / "k.png")
     assert report["camera"]["eye"] == (0.2, 0.0, 2.0)
-    assert PANDA.exists()
 
 
 def test_camera_flag_overrides(panda_json, tmp_path):
