@@ -127,11 +127,37 @@ class World:
         if fn is None:
             names = {p: f"v{i}" for i, p in enumerate(params)}
             scope: dict = {}
-            body = self._expression(f, names, scope)
-            args = ", ".join([*names.values(), "st"])
-            exec(f"def fn({args}):\n    return {body}\n", scope)  # source built from our own AST
-            fn = self._compiled[key] = (f, scope["fn"])  # f kept alive: its id stays unique
+            try:
+                body = self._expression(f, names, scope)
+                args = ", ".join([*names.values(), "st"])
+                exec(f"def fn({args}):\n    return {body}\n", scope)  # source from our own AST
+                compiled = scope["fn"]
+            except (SyntaxError, RecursionError, MemoryError):  # too deep for Python's parser
+                def compiled(*values, _f=f, _params=params):
+                    return self._interpret(_f, dict(zip(_params, values[:-1], strict=True)),
+                                           values[-1])
+            fn = self._compiled[key] = (f, compiled)  # f kept alive: its id stays unique
         return fn[1]
+
+    def _interpret(self, f: ast.Formula, binding: Binding, state) -> bool:
+        """The same semantics as `compiled`, node by node, for formulas too deep for it."""
+        if isinstance(f, ast.Atom):
+            args = tuple(binding.get(a, a) for a in f.args)
+            return args[0] == args[1] if f.predicate == "=" else (f.predicate, *args) in state
+        if isinstance(f, ast.And):
+            return all(self._interpret(p, binding, state) for p in f.parts)
+        if isinstance(f, ast.Or):
+            return any(self._interpret(p, binding, state) for p in f.parts)
+        if isinstance(f, ast.Not):
+            return not self._interpret(f.part, binding, state)
+        if isinstance(f, ast.Imply):
+            return (not self._interpret(f.antecedent, binding, state)
+                    or self._interpret(f.consequent, binding, state))
+        if isinstance(f, (ast.Exists, ast.Forall)):
+            test = any if isinstance(f, ast.Exists) else all
+            return test(self._interpret(f.body, b, state)
+                        for b in self.bindings(f.params, binding))
+        raise TypeError(f"not a formula: {f!r}")
 
     def _expression(self, f: ast.Formula, names: dict[str, str], scope: dict) -> str:
         def term(a: str) -> str:
@@ -144,6 +170,8 @@ class World:
         if isinstance(f, (ast.And, ast.Or)):
             if not f.parts:
                 return "True" if isinstance(f, ast.And) else "False"
+            if len(f.parts) == 1:
+                return self._expression(f.parts[0], names, scope)
             joiner = " and " if isinstance(f, ast.And) else " or "
             return "(" + joiner.join(self._expression(p, names, scope) for p in f.parts) + ")"
         if isinstance(f, ast.Not):

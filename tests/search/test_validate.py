@@ -354,3 +354,20 @@ def test_planner_decorations_are_accepted():
     parsed_plan = parse_plan("0: (pick a t0)\n1.000: (put a b) [1.000]\n")
     assert parsed_plan.steps == (PlanStep("pick", ("a", "t0"), 1, 4),
                                  PlanStep("put", ("a", "b"), 2, 8))
+
+
+@pytest.mark.parametrize("wrap", ["(and {})", "(or (q ?x) {})", "(not (not {}))"])
+def test_deeply_nested_preconditions(wrap):
+    # deeper than Python's own parser takes: evaluated node by node instead
+    pre = "(p ?x)"
+    for _ in range(120):
+        pre = wrap.format(pre)
+    dom = parser.parse_domain("(define (domain d) (:predicates (p ?x) (q ?x)) (:action a "
+                              f":parameters (?x) :precondition {pre} :effect (q ?x)))")
+    for init, valid in (("(p o)", True), ("", False)):
+        prob = parser.parse_problem(f"(define (problem x) (:domain d) (:objects o) "
+                                    f"(:init {init}) (:goal (q o)))")
+        report = validate_plan(dom, prob, ["(a o)"])
+        assert report.valid is valid
+        if not valid:
+            assert report.failure.step == 1
