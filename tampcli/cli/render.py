@@ -81,7 +81,8 @@ def _print_physics(ui, physics: dict) -> None:
         table.add_row(name, f"{row['distance']:.4f}", f"{row['angle_deg']:.1f}",
                       _xyz(row["planned"]), _xyz(row["simulated"]))
     ui.print(table)
-    ui.print(f"largest drift {physics['max_distance']:.4f} m")
+    ui.print(f"largest drift {physics['max_distance']:.4f} m; the robot tracked its "
+             f"trajectory within {physics['tracking_error']:.3f} (rad or m) per joint")
 
 
 def _xyz(values) -> str:

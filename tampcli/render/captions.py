@@ -9,13 +9,16 @@ from PIL import Image, ImageDraw, ImageFont
 _TRUETYPE = ("DejaVuSans.ttf", "LiberationSans-Regular.ttf", "Arial.ttf")
 
 
-def load_font(size: int):
-    for name in _TRUETYPE:
+def load_font(size: int, names: tuple[str, ...] = _TRUETYPE):
+    for name in names:
         try:
             return ImageFont.truetype(name, size)
         except OSError:
             continue
-    return ImageFont.load_default(size)
+    try:
+        return ImageFont.load_default(size)
+    except TypeError:  # Pillow < 10.1: the fixed-size bitmap font only
+        return ImageFont.load_default()
 
 
 def caption_text(label: str, step: int, steps: int, problem: str) -> tuple[str, str]:

@@ -99,6 +99,13 @@ def test_caption_draws_in_the_bar_only():
     assert bar.mean() < 150 and (bar.max(axis=2) > 200).any()  # dark bar, light text
 
 
+def test_caption_without_truetype_fonts():
+    from tampcli.render.captions import load_font
+
+    font = load_font(14, names=("no-such-font.ttf",))
+    assert font.getbbox("step 1/2")[2] > 0
+
+
 def test_keyframe_strip_layout():
     panels = [np.full((10, 20, 3), i * 40, dtype=np.uint8) for i in range(6)]
     strip = keyframe_strip(panels)
