@@ -22,7 +22,8 @@ from tampcli.optimize.options import OptimizeOptions
 
 GEOMETRIC = ("grasp", "place", "push", "move")
 PANDA_OPENING = 0.08  # m, fingers fully open
-PANDA_FINGER_DEPTH = 0.015  # m, grasp point below the object's top (fingertips ~7 mm lower)
+PANDA_FINGER_DEPTH = 0.015  # m, at most this far below the object's top is the grasp point
+PANDA_FINGERTIP = 0.01  # m, fingertips below the grasp target (collision mesh, measured)
 PUSH_STANDOFF = 0.012  # m, tool origin to the pushed face (finger half thickness)
 
 

@@ -7,7 +7,13 @@ import math
 import numpy as np
 
 from tampcli.optimize.grips import Grip
-from tampcli.optimize.problem import PANDA_FINGER_DEPTH, PUSH_STANDOFF, Step, TrajectoryProblem
+from tampcli.optimize.problem import (
+    PANDA_FINGER_DEPTH,
+    PANDA_FINGERTIP,
+    PUSH_STANDOFF,
+    Step,
+    TrajectoryProblem,
+)
 
 PANDA_REACH = 0.855  # m, from the shoulder
 PANDA_SHOULDER = 0.333  # m above the base
@@ -25,7 +31,10 @@ def grip_of(problem: TrajectoryProblem, step: Step, choices: dict) -> Grip:
     if step.kind == "push":
         rho = max(info.half[0], info.half[1]) + PUSH_STANDOFF
         return Grip("push", (-rho, 0.0, 0.0))
-    depth = min(PANDA_FINGER_DEPTH, info.half[2])
+    # Deep enough to hold, shallow enough that the fingertips stay clear of
+    # whatever the object stands on (thin discs, trays with rims).
+    clear = 2 * info.half[2] - PANDA_FINGERTIP - problem.options.margin - 0.005
+    depth = float(np.clip(min(PANDA_FINGER_DEPTH, clear), 0.002, info.half[2]))
     return Grip("top", (0.0, 0.0, info.half[2] - depth), psi=choices.get(f"psi{step.index}", 0.0))
 
 
