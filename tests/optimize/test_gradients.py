@@ -147,3 +147,55 @@ def test_collision_rows_at_active_contacts(wall):
     else:
         pytest.fail("no blend with active, non-degenerate contacts")
     _check(lambda v: evaluate(layout.pack(v)), layout, x, h=1e-5, tol=2e-3)
+
+
+def test_keyframe_rows_stacking_on_a_moved_cube():
+    """on_top_of a support the skeleton moved, and rows that depend on two keyframes."""
+    from tampcli.geometry.modes import load_modes
+    from tampcli.geometry.scene import load_scene
+    from tampcli.geometry.world import World
+    from tampcli.pddl import parser
+
+    from .helpers import ROOT
+
+    d = ROOT / "domains" / "arm-pick-place"
+    domain = parser.parse_domain_file(d / "domain.pddl")
+    problem_ast = parser.parse_problem_file(ROOT / "problems" / "arm-pick-place" / "p05.pddl")
+    modes = load_modes(d / "modes.toml", domain)
+    scene = load_scene(ROOT / "problems" / "arm-pick-place" / "p05.scene.toml", domain,
+                       problem_ast, modes=modes, geometric=False)
+    with World(scene) as world:
+        problem = lower(ops("(pick b start)", "(stack b c)", "(pick a start)", "(stack a b)"),
+                        scene, modes, world, domain=domain)
+        assert problem.error is None
+        assert problem.steps[3].support == "b" and problem.steps[3].rest_z == pytest.approx(
+            0.05 + 0.045 + 0.02)
+        layout = final_layout(problem)
+        vals, origins = final_guess(problem)
+        x = layout.pack(vals) + np.random.default_rng(3).normal(0, 0.01, layout.size)
+        _check(lambda v: final_rows(problem, v, origins), layout, x)
+        placements, _ = final_guess(problem)
+        kvals, choices = keyframe_guess(problem, placements, world.start,
+                                        np.random.default_rng(0))
+        klayout = keyframe_layout(problem)
+        x = klayout.pack(kvals) + np.random.default_rng(4).normal(0, 0.02, klayout.size)
+        kin = Kinematics(world)
+        _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
+                                       collisions=False), klayout, x)
+
+
+def test_keyframe_rows_panda_push(wall):
+    """The arm's push grip: a yaw-offset parameter and the object kept on its support."""
+    from tampcli.geometry.modes import Mode
+
+    scene, _, world = wall
+    modes = {"push": Mode("push", "push", "?b", to="?to", params=("?b", "?from", "?to"))}
+    problem = lower(ops("(push a start goal)"), scene, modes, world)
+    assert problem.error is None and problem.grip_params == (0,)
+    placements, _ = final_guess(problem)
+    vals, choices = keyframe_guess(problem, placements, world.start, np.random.default_rng(0))
+    layout = keyframe_layout(problem)
+    x = layout.pack(vals) + np.random.default_rng(5).normal(0, 0.03, layout.size)
+    kin = Kinematics(world)
+    _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
+                                   collisions=False), layout, x)

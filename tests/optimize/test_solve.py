@@ -104,3 +104,32 @@ def test_object_larger_than_region_is_proved_infeasible(planar):
     result = solve(problem, "final")
     assert result.status == "infeasible" and result.proved
     assert "does not fit region goal" in result.worst_constraint
+
+
+def test_move_ends_with_the_tool_in_the_region(planar):
+    from tampcli.geometry.modes import Mode
+
+    scene, _, world = planar
+    modes = {"goto": Mode("goto", "move", to="?r", params=("?r",))}
+    problem = lower(ops("(goto goal)"), scene, modes, world)
+    result = solve(problem, "path")
+    assert result.solved, result.worst_constraint
+    assert [p.action for p in result.phases] == ["(goto goal)"]
+    assert result.phases[0].end - result.phases[0].start == problem.options.waypoints
+    region = scene.region("goal")
+    end = result.trajectory[-1]
+    assert np.all(np.abs(end - np.array(region.center)) <= 0.5 * np.array(region.size) + 1e-6)
+    assert verify(problem, result) == []
+
+
+def test_warm_start_from_a_solved_prefix(planar):
+    scene, modes, world = planar
+    prefix = lower(ops("(pick o start)"), scene, modes, world)
+    warm = solve(prefix, "keyframes")
+    assert warm.solved
+    full = lower(ops("(pick o start)", "(place o goal)"), scene, modes, world)
+    result = solve(full, "keyframes", warm)
+    assert result.solved
+    assert set(warm.keyframes) <= set(result.keyframes)
+    path = solve(full, "path", result)
+    assert path.solved and verify(full, path) == []
