@@ -116,6 +116,7 @@ class CollisionChecker:
         self.support = find_support(world, self.fixed)
         self.slides = world.scene.robot.model == "planar"  # the whole robot rests on its support
         self._static_link = np.array([self.group[p.link] == 0 for p in self.link_parts])
+        self._all_links = np.ones(len(self.link_parts), dtype=bool)
         self._in_tool_group = np.array([self.group[p.link] == self.tool_group
                                         for p in self.link_parts])
         self.self_pairs = self._self_pairs()
@@ -199,7 +200,8 @@ class CollisionChecker:
         poses = self._body_poses(body_poses)
         out: list[Contact] = []
         parts = self.link_parts
-        usable = np.array([not _ignored(p, ignore) for p in parts])
+        usable = (np.array([not _ignored(p, ignore) for p in parts]) if ignore
+                  else self._all_links)
         # Robot links vs bodies: bounding boxes of all pairs at once.
         link_c, link_h = world_boxes(np.array([frames[p.link] for p in parts]),
                                      self._box_c, self._box_h)
