@@ -91,7 +91,15 @@ def signed_distance(request, a: Placed, oa, b: Placed, ob):
     oa.setTransform(a.fcl_transform())
     ob.setTransform(b.fcl_transform())
     result = fcl.DistanceResult()  # keeps the smallest value seen: one per query
-    d = float(fcl.distance(oa, ob, request, result))
+    try:
+        d = float(fcl.distance(oa, ob, request, result))
+    except RuntimeError:
+        # FCL's EPA can throw on degenerate contacts (fcl#319): decide without it.
+        exact = gjk_distance(a.support_point, b.support_point, b.pos - a.pos, TOLERANCE)
+        if exact is not None and exact[0] > TOLERANCE:
+            dist, pa, pb = exact
+            return dist, pa, pb, (pb - pa) / dist
+        return _checked_penetration(0.0, None, None, None, a, b)
     p1 = np.array(result.nearest_points[0])
     p2 = np.array(result.nearest_points[1])
     diff = p2 - p1
