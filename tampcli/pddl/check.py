@@ -128,13 +128,16 @@ class _DomainChecker:
         self.functions: dict[str, ast.FunctionDef] = {}
         self.constants: dict[str, tuple[str, ...]] = {}
         self.derived = frozenset(axiom.name for axiom in domain.axioms)
+        self.declared_types: frozenset[str] = frozenset({OBJECT})
 
     def run(self) -> None:
         d = self.domain
         self._types()
+        constants: dict[str, ast.Typed] = {}
         for typed in d.constants:
-            self._duplicate(self.constants, typed.name, typed.span, "constant")
+            self._duplicate(constants, typed.name, typed.span, "constant")
             self._declared_types(typed)
+            constants[typed.name] = typed
             self.constants[typed.name] = typed.types
         for pred in d.predicates:
             self._duplicate(self.predicates, pred.name, pred.span, "predicate")
@@ -194,9 +197,10 @@ class _DomainChecker:
         return _Scope(variables, outer.owner if outer else owner)
 
     def _duplicate(self, table: dict, name: str, span: ast.Span, what: str) -> None:
+        """`table` maps the names seen so far to their nodes."""
         if name in table:
-            first = table[name].span if hasattr(table[name], "span") else None
-            where = f" (first declared on line {first.line})" if first and first.line else ""
+            first = table[name].span.line
+            where = f" (first declared on line {first})" if first else ""
             raise self.src.error(f"duplicate {what} {name}{where}", span)
 
     # ---- formulas and effects
