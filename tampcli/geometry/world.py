@@ -15,6 +15,7 @@ import numpy as np
 import pybullet
 import pybullet_data
 
+from tampcli.errors import SceneError
 from tampcli.geometry import transforms
 from tampcli.geometry.chain import PRISMATIC, REVOLUTE, Chain, measure_chain
 from tampcli.geometry.ik import solve_ik
@@ -70,8 +71,7 @@ class World:
         pb, c = self.pb, self.client
         pos, orn = body.pose[:3], body.pose[3:]
         if body.shape == "urdf":
-            uid = pb.loadURDF(body.urdf, pos, orn, useFixedBase=True,
-                              globalScaling=body.scale[0], physicsClientId=c)
+            uid = self._load_urdf(body.urdf, pos, orn, body.scale[0], "objects.urdf", body.line)
             pb.changeVisualShape(uid, -1, rgbaColor=body.color, physicsClientId=c)
             return uid
         if body.shape == "box":
@@ -91,10 +91,21 @@ class World:
         else:
             col = pb.createCollisionShape(pb.GEOM_MESH, fileName=body.mesh,
                                           meshScale=list(body.scale), physicsClientId=c)
+            if col < 0:
+                raise SceneError(f"PyBullet cannot read the mesh {body.mesh}",
+                                 path=self.scene.path, line=body.line, key="objects.mesh")
             vis = pb.createVisualShape(pb.GEOM_MESH, fileName=body.mesh,
                                        meshScale=list(body.scale), rgbaColor=body.color,
                                        physicsClientId=c)
         return pb.createMultiBody(0.0, col, vis, pos, orn, physicsClientId=c)
+
+    def _load_urdf(self, path, pos, orn, scale: float, key: str, line) -> int:
+        try:
+            return self.pb.loadURDF(path, pos, orn, useFixedBase=True, globalScaling=scale,
+                                    physicsClientId=self.client)
+        except self.pb.error as e:
+            raise SceneError(f"PyBullet cannot load {path}: {e}", path=self.scene.path,
+                             line=line, key=key) from None
 
     def _load_robot(self) -> None:
         pb, c, spec = self.pb, self.client, self.scene.robot
@@ -113,16 +124,14 @@ class World:
                 joints, tool = PANDA_JOINTS, PANDA_TOOL
             else:
                 path, joints, tool = spec.urdf, spec.joints, spec.tool_link
-            uid = pb.loadURDF(path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]),
-                              useFixedBase=True, physicsClientId=c)
+            uid = self._load_urdf(path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]),
+                                  1.0, "robot.urdf", spec.line)
             pb_joint_names = {j: pb.getJointInfo(uid, j, physicsClientId=c)[1].decode()
                               for j in range(pb.getNumJoints(uid, physicsClientId=c))}
         self.robot_id = uid
         by_name = {name: j for j, name in pb_joint_names.items()}
         missing = [j for j in joints if j not in by_name]
         if missing:
-            from tampcli.errors import SceneError
-
             raise SceneError(f"the robot has no joint named {', '.join(missing)}; it has "
                              f"{', '.join(by_name)}", path=self.scene.path, line=spec.line,
                              key="robot.joints")
@@ -138,8 +147,6 @@ class World:
                                           fixed_values, link_names)
         self.link_names: tuple[str, ...] = self.chain.names
         if tool not in self.chain.index:
-            from tampcli.errors import SceneError
-
             raise SceneError(f"the robot has no link named {tool!r}", path=self.scene.path,
                              line=spec.line, key="robot.tool_link")
         self.tool_link = tool

@@ -221,3 +221,18 @@ def test_urdf_robot_with_unknown_joint_is_a_scene_error():
     with pytest.raises(SceneError) as info:
         World(bad)
     assert info.value.key == "robot.tool_link"
+
+
+def test_unloadable_files_are_scene_errors(tmp_path):
+    import dataclasses
+
+    from tampcli.errors import SceneError
+
+    bad = tmp_path / "bad.urdf"
+    bad.write_text("<robot name='x'><link name='a'>")
+    scene = planar_scene()
+    broken = dataclasses.replace(scene, bodies=scene.bodies + (
+        dataclasses.replace(scene.bodies[0], name="thing", shape="urdf", urdf=str(bad)),))
+    with pytest.raises(SceneError) as info:
+        World(broken)
+    assert info.value.key == "objects.urdf"
