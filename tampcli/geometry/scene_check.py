@@ -66,9 +66,9 @@ def check_modes_against_scene(src: TomlSource | None, scene: Scene, modes, domai
             for name in candidates:
                 if scene.has_body(name) or scene.has_region(name):
                     continue
-                where = f" ({modes.path}:{mode.line})" if mode.line else ""
+                where = f", {modes.path}:{mode.line}" if mode.line else ""
                 message = (f"no object or region {name!r} in the scene, but action "
-                           f"{mode.action!r} may {mode.kind} it ({role} = {param!r}{where})")
+                           f"{mode.action!r} may {mode.kind} it ({role} = {param}{where})")
                 line = src.line("objects") if src is not None else None
                 raise SceneError(message, path=scene.path, line=line or 1, key="objects",
                                  source_line=source_line_at(src.text, line or 1)
