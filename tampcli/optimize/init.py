@@ -49,8 +49,12 @@ def final_guess(problem: TrajectoryProblem, warm: dict | None = None):
     return vals, origins
 
 
-def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng):
-    """IK keyframes following the actions; returns (block values, discrete choices)."""
+def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng,
+                   jitter: float = 0.0):
+    """IK keyframes following the actions; returns (block values, discrete choices).
+
+    `jitter` (rad) perturbs the IK seeds: a retry then lands in another IK branch.
+    """
     world = problem.world
     vals: dict[str, np.ndarray] = {}
     choices: dict[str, float] = {}
@@ -59,7 +63,9 @@ def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng):
     planar = problem.planar
 
     def solve_ik(target):
-        q, res = world.ik(target, seed=q_prev, rng_seed=int(rng.integers(1 << 30)))
+        seed = q_prev + rng.normal(0.0, jitter, len(q_prev)) if jitter else q_prev
+        seed = np.clip(seed, world.lower, world.upper)
+        q, res = world.ik(target, seed=seed, rng_seed=int(rng.integers(1 << 30)))
         return q, res
 
     def best_of(targets, held=None, ignore=frozenset()):
@@ -86,7 +92,8 @@ def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng):
             obj_pose = poses[step.obj]
             if planar:
                 p_prev = world.tool_pose(q_prev)[:2, 3]
-                phi = _angle(obj_pose[:2, 3] - p_prev)
+                phi = _angle(obj_pose[:2, 3] - p_prev) + (rng.normal(0.0, 4 * jitter)
+                                                           if jitter else 0.0)
                 choices[f"z{step.index}"] = float(obj_pose[2, 3])
                 choices[f"yaw{step.index}"] = transforms.yaw_of(obj_pose)
                 grip = grip_of(problem, step, choices)

@@ -29,6 +29,7 @@ from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, k
 GRIP_BOUND = 4 * math.pi
 LAZY_BAND = 0.005  # m: a point between waypoints this close to violating gets its rows
 LAZY_ROUNDS = 3
+RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
 
 
 class _Run:
@@ -159,7 +160,8 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
             bounds.append((-GRIP_BOUND, GRIP_BOUND))
     best = None
     for attempt in range(2):
-        vals, choices = keyframe_guess(problem, placements, run.start, run.rng)
+        vals, choices = keyframe_guess(problem, placements, run.start, run.rng,
+                                       jitter=RETRY_JITTER if attempt else 0.0)
         if attempt == 0 and _shares_prefix(problem, warm):
             choices.update(warm.choices)
             for block, v in warm.keyframes.items():
