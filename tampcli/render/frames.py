@@ -77,7 +77,7 @@ def render_frames(job: FrameJob, states: Sequence[FrameState], workers: int = 1,
     A run of identical states (a pause) is rendered once and repeated.
     """
     unique, repeats = _runs(states)
-    workers = max(1, min(workers, -(-len(unique) // CHUNK)))
+    workers = workers_used(len(unique), workers)
     if workers == 1:
         frames = _render_here(job, unique)
     else:
@@ -90,6 +90,15 @@ def render_frames(job: FrameJob, states: Sequence[FrameState], workers: int = 1,
                 yield frame
     finally:
         frames.close()  # stops the workers now, also when the consumer gave up early
+
+
+def workers_used(distinct: int, workers: int) -> int:
+    """No more workers than chunks of distinct frames."""
+    return max(1, min(workers, -(-distinct // CHUNK)))
+
+
+def distinct_count(states: Sequence[FrameState]) -> int:
+    return len(_runs(states)[0])
 
 
 def _runs(states: Sequence[FrameState]) -> tuple[list[FrameState], list[int]]:

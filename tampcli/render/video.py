@@ -9,7 +9,13 @@ from pathlib import Path
 from tampcli.render.camera import choose_camera
 from tampcli.render.captions import Captioner
 from tampcli.render.encode import keyframe_strip, open_writer, save_image
-from tampcli.render.frames import FrameJob, frame_renderer, render_frames
+from tampcli.render.frames import (
+    FrameJob,
+    distinct_count,
+    frame_renderer,
+    render_frames,
+    workers_used,
+)
 from tampcli.render.inputs import check_against_world, load_inputs, mode_kind_of
 from tampcli.render.options import RenderOptions, check_writable, image_format, video_format
 from tampcli.render.progress import progress
@@ -47,7 +53,8 @@ def render_solution(source: Solution | str | Path, out_path: str | Path | None,
     if kind is not None:
         states = replay.states(options.fps)
         report["frames"] = _write_video(kind, out_path, job, states, options, ui)
-        report["workers"] = min(options.worker_count, len(states))
+        report["distinct_frames"] = distinct_count(states)
+        report["workers"] = workers_used(report["distinct_frames"], options.worker_count)
     if keyframes is not None:
         report["keyframes"], report["panels"] = str(keyframes), _write_strip(
             keyframes, job, replay)
