@@ -82,3 +82,17 @@ def test_skeleton_errors_are_proved_infeasible_not_raised(wall, plan, words):
         r = solve(p, stage)
         assert r.status == "infeasible" and r.proved
         assert words in r.worst_constraint
+
+
+def test_a_skeleton_of_symbolic_actions_only(planar):
+    from tampcli.geometry.modes import Mode
+
+    scene, _, world = planar
+    p = lower(ops("(wait)", "(wait)"), scene, {"wait": Mode("wait", "none")}, world)
+    for stage in ("final", "keyframes"):
+        assert solve(p, stage).solved
+    result = solve(p, "path")
+    assert result.solved and result.cost == 0.0
+    assert len(result.trajectory) == 1
+    assert [(ph.start, ph.end) for ph in result.phases] == [(0, 0), (0, 0)]
+    assert all(len(v) == 3 for v in result.object_poses.values())
