@@ -34,10 +34,7 @@ def load_inputs(source: Solution | str | Path) -> RenderInputs:
         raise SolutionFileError(f"nothing to render: no trajectory (status {sol.status}"
                                 + (f": {sol.reason}" if sol.reason else "") + ")", path,
                                 key="trajectory")
-    for i, q in enumerate(sol.trajectory):
-        if not all(math.isfinite(v) for v in q):
-            raise SolutionFileError(f"waypoint {i} holds a non-finite value", path,
-                                    key="trajectory")
+    _check_shape(sol, path)
     if sol.scene is None:
         raise SolutionFileError("names no scene file: a symbolic solution has nothing to "
                                 "render", path, key="scene")
@@ -59,6 +56,28 @@ def load_inputs(source: Solution | str | Path) -> RenderInputs:
     modes = _load_modes(anchor, sol, domain)
     name = problem.name if problem is not None else Path(sol.problem or "").stem
     return RenderInputs(sol, path, scene, name, modes)
+
+
+def _check_shape(sol: Solution, path: str) -> None:
+    """What `solution.read` checks for a file, for a Solution built in memory too."""
+    n = len(sol.trajectory)
+    for i, q in enumerate(sol.trajectory):
+        if len(q) != len(sol.trajectory[0]):
+            raise SolutionFileError("waypoints of different lengths", path, key="trajectory")
+        if not all(math.isfinite(v) for v in q):
+            raise SolutionFileError(f"waypoint {i} holds a non-finite value", path,
+                                    key="trajectory")
+    for i, phase in enumerate(sol.phases):
+        if not 0 <= phase.start <= phase.end < n:
+            raise SolutionFileError(f"start/end out of range (trajectory has {n} waypoints)",
+                                    path, key=f"phases[{i}]")
+    for name, poses in sol.objects.items():
+        if sol.phases and len(poses) != len(sol.phases) + 1:
+            raise SolutionFileError(f"expected {len(sol.phases) + 1} poses (one per phase "
+                                    f"boundary), found {len(poses)}", path, key=f"objects.{name}")
+        if any(len(pose) != 7 or not all(math.isfinite(v) for v in pose) for pose in poses):
+            raise SolutionFileError("each pose needs 7 finite numbers [x y z qx qy qz qw]",
+                                    path, key=f"objects.{name}")
 
 
 def _load_modes(anchor: Path, sol: Solution, domain):

@@ -227,3 +227,25 @@ def test_a_worker_that_dies_is_an_error_not_a_hang(panda_json):
         for _ in frames:
             pass
     assert not [p for p in multiprocessing.active_children() if p.name.startswith("tampcli")]
+
+
+@pytest.mark.parametrize("change,key", [
+    ("short_poses", "objects.a"), ("bad_phase", "phases[1]"), ("nan", "trajectory")])
+def test_an_in_memory_solution_is_checked_like_a_file(change, key):
+    from render_solutions import panda_solution
+
+    from tampcli.solution import Phase, Solution
+
+    sol = panda_solution()
+    if change == "short_poses":
+        sol = Solution(**{**sol.__dict__, "objects": {**sol.objects, "a": sol.objects["a"][:2]}})
+    elif change == "bad_phase":
+        phases = list(sol.phases)
+        phases[1] = Phase("(pick a table)", 999, 999, "a")
+        sol = Solution(**{**sol.__dict__, "phases": tuple(phases)})
+    else:
+        sol = Solution(**{**sol.__dict__, "trajectory": ((float("nan"),) * 7,)
+                          + sol.trajectory[1:]})
+    with pytest.raises(SolutionFileError) as err:
+        render_solution(sol, None, RenderOptions(**SMALL))
+    assert err.value.key == key
