@@ -66,9 +66,15 @@ def bench_fk(world, qs, repeat):
             pb.resetJointState(robot, j, float(v), physicsClientId=client)
         pb.getLinkStates(robot, links, computeForwardKinematics=True, physicsClientId=client)
 
+    batch = np.array(qs[:50])
+
+    def ours_batched():
+        chain.fk_batch(batch)
+
     mine, theirs = timed(ours, repeat), timed(peer, repeat)
+    batched = timed(ours_batched, max(repeat // 50, 5)) / len(batch)
     world.set_state(world.start)
-    return mine, theirs
+    return mine, theirs, batched
 
 
 def active_pairs(world, checker, qs):
@@ -166,7 +172,7 @@ def main(argv=None) -> int:
         checker = CollisionChecker(world)
         rng = np.random.default_rng(1)
         qs = [rng.uniform(world.lower, world.upper) for _ in range(n_q)]
-        fk, fk_peer = bench_fk(world, qs, 2000 if not args.quick else 300)
+        fk, fk_peer, fk_batched = bench_fk(world, qs, 2000 if not args.quick else 300)
         pairs = active_pairs(world, checker, qs)
         apart = [p for p in pairs if _pair_distance(checker, p) > 0]
         inside = [p for p in pairs if _pair_distance(checker, p) <= 0]
@@ -178,6 +184,8 @@ def main(argv=None) -> int:
     rows = [
         ("FK, all 13 Panda links, per configuration", "<= 50 us", fk * us, fk_peer * us,
          "resetJointState x7 + getLinkStates(all, computeForwardKinematics)"),
+        ("  same, batched over 50 configurations (Chain.fk_batch), per configuration", "",
+         fk_batched * us, fk_peer * us, "same"),
         ("signed distance per active pair, separated (<= 5 cm): witness points, normal, "
          "gradient, Python glue included", "<= 30 us", pair * us, pair_peer * us,
          "getClosestPoints(link, box)"),

@@ -96,6 +96,36 @@ class Chain:
                 frames[i] = frames[parent] @ a
         return frames
 
+    def fk_batch(self, qs) -> np.ndarray:
+        """(T, L, 4, 4) frames of all links for T configurations (rows of qs).
+
+        One batched product per link instead of T: for waypoint-wise work.
+        """
+        qs = np.atleast_2d(np.asarray(qs, dtype=float))
+        out = np.empty((len(qs), len(self.links), 4, 4))
+        out[:, 0] = self.base_pose
+        for i, parent, a, b, c, kind, qi in self._plan:
+            if kind == REVOLUTE:
+                v = qs[:, qi, None, None]
+                local = a + np.sin(v) * b + (1.0 - np.cos(v)) * c
+            elif kind == PRISMATIC:
+                local = a + qs[:, qi, None, None] * b
+            else:
+                local = a
+            np.matmul(out[:, parent], local, out=out[:, i])
+        return out
+
+    def tool_jacobian_batch(self, frames: np.ndarray, link: int) -> np.ndarray:
+        """(T, 6, n) [linear; angular] Jacobians of `link`'s origin from fk_batch frames."""
+        joint_frames = frames[:, self.joint_link]  # (T, n, 4, 4)
+        axes = np.einsum("tnij,nj->tni", joint_frames[:, :, :3, :3], self.joint_axis)
+        lever = frames[:, link, None, :3, 3] - joint_frames[:, :, :3, 3]
+        linear = np.where(self.revolute[None, :, None], np.cross(axes, lever), axes)
+        angular = np.where(self.revolute[None, :, None], axes, 0.0)
+        mask = self.moved_mask[link][None, :, None]
+        return np.concatenate([(linear * mask).transpose(0, 2, 1),
+                               (angular * mask).transpose(0, 2, 1)], axis=1)
+
     def joint_axes(self, frames) -> tuple[np.ndarray, np.ndarray]:
         """World axes (n, 3) and origins (n, 3) of the q joints, for a set of frames."""
         stacked = np.array([frames[i] for i in self._joint_links])

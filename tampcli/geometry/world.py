@@ -238,6 +238,14 @@ class World:
     def tool_pose(self, q) -> np.ndarray:
         return self.chain.fk_list(q)[self._tool_index]
 
+    def tool_poses(self, qs) -> np.ndarray:
+        """(T, 4, 4) tool poses for the rows of qs (batched: cheap per waypoint)."""
+        return self.chain.fk_batch(qs)[:, self._tool_index]
+
+    def tool_jacobians(self, qs) -> np.ndarray:
+        """(T, 6, n) tool Jacobians (linear; angular) for the rows of qs."""
+        return self.chain.tool_jacobian_batch(self.chain.fk_batch(qs), self._tool_index)
+
     def point_jacobian(self, q, link: str, point_world) -> np.ndarray:
         """(3, n): d point / d q for a point rigidly attached to `link`."""
         frames = self.chain.fk_list(q)

@@ -236,3 +236,16 @@ def test_unloadable_files_are_scene_errors(tmp_path):
     with pytest.raises(SceneError) as info:
         World(broken)
     assert info.value.key == "objects.urdf"
+
+
+@pytest.mark.parametrize("name", ["panda", "planar", "kuka"])
+def test_batched_fk_and_jacobians_match_single(name, request):
+    world = request.getfixturevalue(name)
+    qs = np.array(_random_qs(world, 12, seed=9))
+    frames = world.chain.fk_batch(qs)
+    poses, jacs = world.tool_poses(qs), world.tool_jacobians(qs)
+    for t, q in enumerate(qs):
+        for k, frame in enumerate(world.chain.fk_list(q)):
+            np.testing.assert_allclose(frames[t, k], frame, atol=1e-12)
+        np.testing.assert_allclose(poses[t], world.tool_pose(q), atol=1e-12)
+        np.testing.assert_allclose(jacs[t], world.tool_jacobian(q), atol=1e-12)
