@@ -249,3 +249,25 @@ def test_batched_fk_and_jacobians_match_single(name, request):
             np.testing.assert_allclose(frames[t, k], frame, atol=1e-12)
         np.testing.assert_allclose(poses[t], world.tool_pose(q), atol=1e-12)
         np.testing.assert_allclose(jacs[t], world.tool_jacobian(q), atol=1e-12)
+
+
+def test_fingers_open_and_close_for_replay(panda):
+    pb, c = panda.pb, panda.client
+    fingers = panda.finger_joints
+
+    def opening():
+        return [pb.getJointState(panda.robot_id, j, physicsClientId=c)[0] for j in fingers]
+
+    try:
+        assert opening() == pytest.approx([0.04, 0.04])
+        panda.set_state(panda.start, fingers_closed=True)
+        assert opening() == pytest.approx([0.0, 0.0])
+        panda.set_state(panda.start, fingers_closed=True, finger_opening=0.025)
+        assert opening() == pytest.approx([0.025, 0.025])
+        # Kinematics (and collision geometry) keep the fingers open whatever replay does.
+        frames = panda.fk(panda.start)
+        gap = np.linalg.norm(frames["panda_leftfinger"][:3, 3]
+                             - frames["panda_rightfinger"][:3, 3])
+        assert gap == pytest.approx(0.08, abs=1e-6)
+    finally:
+        panda.set_state(panda.start)
