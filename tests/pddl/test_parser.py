@@ -1,9 +1,12 @@
 """The parser: tokens, case, spans, keywords as names, deep input, error texts."""
 
+import re
+
 import pytest
 
 from tampcli.errors import InputError, PDDLSyntaxError
 from tampcli.pddl import ast, parser
+from tests.conftest import IPC
 
 DOMAIN = """(define (domain d)
   (:requirements :typing)
@@ -120,3 +123,13 @@ def test_cached_tables_parse_like_fresh_ones(tmp_path):
     assert ast.Span(1, 1, 9, 49) == loaded.span == fresh.span
     cache.write_bytes(b"garbage\n")  # a broken cache is rebuilt, not an error
     assert parser.build_lark(str(cache)).parse(DOMAIN) == fresh
+
+
+@pytest.mark.parametrize("name", ["blocks/domain.pddl", "miconic-fulladl/domain.pddl",
+                                  "elevators-opt08-strips/p05.pddl", "psr-large/domain.pddl",
+                                  "rovers/p03.pddl"])
+def test_whole_atom_tokens_build_the_same_tree_as_token_by_token(name):
+    text = (IPC / name).read_text()
+    # A comment before every ")" keeps the lexer from taking any atom whole.
+    slow = re.sub(r"\)", " ; no atom here\n)", re.sub(r";[^\n]*", "", text))
+    assert parser.parse(slow) == parser.parse(text)
