@@ -17,7 +17,7 @@ import pybullet_data
 
 from tampcli.errors import SceneError
 from tampcli.geometry import transforms
-from tampcli.geometry.chain import PRISMATIC, REVOLUTE, Chain, measure_chain
+from tampcli.geometry.chain import REVOLUTE, Chain, measure_chain
 from tampcli.geometry.ik import solve_ik
 from tampcli.geometry.scene import PANDA_READY, Body, Scene
 
@@ -30,7 +30,16 @@ PLANAR_LINKS = ("planar_x", "planar_body")
 
 
 class World:
-    """A scene in PyBullet; use as a context manager or call `close()`."""
+    """A scene in PyBullet; use as a context manager or call `close()`.
+
+    Robots: `panda` (pybullet_data's Franka Panda, fixed base at `base`; q =
+    the 7 arm joints; tool frame `panda_grasptarget`, 0.105 m beyond the hand
+    along its z axis; the fingers are not in q and stay open for kinematics
+    and collisions); `planar` (a vertical cylinder whose joints `x`, `y` hold
+    world coordinates, bounded by the scene's extent); or any URDF arm with
+    the `joints` and `tool_link` the scene names. Link frames are URDF link
+    frames. All bodies are static in the simulator: nothing is simulated.
+    """
 
     def __init__(self, scene: Scene):
         self.scene = scene
@@ -339,5 +348,3 @@ def _pb_names_to_q(pb, client, uid, pb_joints) -> dict[str, int]:
         names[pb.getJointInfo(uid, j, physicsClientId=client)[1].decode()] = i
     return names
 
-
-__all__ = ["World", "PRISMATIC", "REVOLUTE"]
