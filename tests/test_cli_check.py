@@ -97,3 +97,9 @@ def test_semantic_error_exit_code_and_caret(cli, tmp_path):
     assert run.err.rstrip().endswith("^")
     assert run.out == ""
     assert cli("check", BW, BW1).code == 0
+
+
+def test_modes_without_a_scene_is_a_warning(cli, tmp_path):
+    run = cli("check", BW, BW1, "--modes", tmp_path / "modes.toml")
+    assert run.code == 0
+    assert "modes.toml: not checked, the problem has no scene" in run.err

@@ -43,6 +43,8 @@ def run(args, ui) -> int:
         summary["scene"] = scene
         if scene:
             warnings += scene.get("warnings", [])
+        elif args.modes:
+            warnings.append(f"{args.modes}: not checked, the problem has no scene")
     summary["warnings"] = warnings
     for warning in warnings:
         ui.warn(warning)
