@@ -131,6 +131,10 @@ class CollisionChecker:
         self._box_c = np.array([p.box_center for p in self.link_parts]).reshape(-1, 3)
         self._box_h = np.array([p.box_half for p in self.link_parts]).reshape(-1, 3)
         self._body_box_c, self._body_box_h = self._body_boxes(self._start)
+        self._sphere_c = np.array([p.shape.center for p in self.link_parts]).reshape(-1, 3)
+        self._sphere_r = np.array([p.shape.radius for p in self.link_parts])
+        self._body_sphere_c = self._body_spheres(self._start)
+        self._body_sphere_r = np.array([p.shape.radius for _, _, p in self._flat])
         self._static_placed = {
             ("body", name, k): Placed(part.shape, self._start[name] @ part.shape.local)
             for name, k, part in self._flat}
@@ -202,21 +206,27 @@ class CollisionChecker:
         parts = self.link_parts
         usable = (np.array([not _ignored(p, ignore) for p in parts]) if ignore
                   else self._all_links)
-        # Robot links vs bodies: bounding boxes of all pairs at once.
-        link_c, link_h = world_boxes(np.array([frames[p.link] for p in parts]),
-                                     self._box_c, self._box_h)
-        body_c, body_h = self._body_box_c, self._body_box_h
+        # Robot links vs bodies: bounding boxes and spheres of all pairs at once;
+        # each gives a lower bound on the distance, their maximum is used.
+        link_frames = np.array([frames[p.link] for p in parts])
+        link_c, link_h = world_boxes(link_frames, self._box_c, self._box_h)
+        link_s = np.einsum("kij,kj->ki", link_frames[:, :3, :3], self._sphere_c) \
+            + link_frames[:, :3, 3]
+        body_c, body_h, body_s = self._body_box_c, self._body_box_h, self._body_sphere_c
         columns = np.ones(len(self._flat), dtype=bool)
         if body_poses:
             rows = [j for name in body_poses for j in self._flat_of.get(name, ())]
             if rows:
-                body_c, body_h = body_c.copy(), body_h.copy()
+                body_c, body_h, body_s = body_c.copy(), body_h.copy(), body_s.copy()
                 body_c[rows], body_h[rows] = self._body_boxes(poses, rows)
+                body_s[rows] = self._body_spheres(poses, rows)
         for name in (held_name, *ignore):
             bare = name.partition(":")[2] if name and name.startswith("body:") else name
             for j in self._flat_of.get(bare, ()):
                 columns[j] = False
-        close = box_gaps(link_c, link_h, body_c, body_h) <= activation
+        spheres = (np.linalg.norm(link_s[:, None, :] - body_s[None, :, :], axis=2)
+                   - self._sphere_r[:, None] - self._body_sphere_r[None, :])
+        close = np.maximum(box_gaps(link_c, link_h, body_c, body_h), spheres) <= activation
         close &= self._covered[bool(static)]
         close &= usable[:, None] & columns[None, :]
         for i, j in zip(*np.nonzero(close), strict=True):
@@ -230,7 +240,10 @@ class CollisionChecker:
         if len(self._self_a):
             ia, ib = self._self_a, self._self_b
             apart = np.abs(link_c[ia] - link_c[ib]) - link_h[ia] - link_h[ib]
-            gaps = np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=1))
+            gaps = np.maximum(
+                np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=1)),
+                np.linalg.norm(link_s[ia] - link_s[ib], axis=1)
+                - self._sphere_r[ia] - self._sphere_r[ib])
             for k in np.nonzero((gaps <= activation) & usable[ia] & usable[ib])[0]:
                 a, b = int(ia[k]), int(ib[k])
                 self._pair(query, out, activation, (a, parts[a], None), (b, parts[b], None))
@@ -337,6 +350,11 @@ class CollisionChecker:
         frames = np.array([poses[name] for name, _, _ in flat])
         return world_boxes(frames, np.array([p.box_center for _, _, p in flat]),
                            np.array([p.box_half for _, _, p in flat]))
+
+    def _body_spheres(self, poses, rows=None) -> np.ndarray:
+        flat = self._flat if rows is None else [self._flat[j] for j in rows]
+        return np.array([poses[name][:3, :3] @ p.shape.center + poses[name][:3, 3]
+                         for name, _, p in flat]).reshape(-1, 3)
 
     def _query(self, q, body_poses) -> _Query:
         placed = self._static_placed
