@@ -146,15 +146,14 @@ def separation_bound(a: Placed, b: Placed) -> float:
     norm = math.sqrt(float(axis @ axis))
     if norm <= 1e-9:
         return -math.inf
-    dirs = [axis / norm]
-    for placed in (a, b):
-        if placed.shape.kind in ("box", "convex"):
-            # Each axis of the solid's frame (a box's face normals; a mesh's
-            # frame, in which links are long and thin), turned to point from a to b.
-            rot = placed.rot
-            signs = np.sign(rot.T @ axis)
-            dirs.extend((rot * np.where(signs == 0, 1.0, signs)).T)
-    u = np.array(dirs)
+    framed = [p.rot for p in (a, b) if p.shape.kind in ("box", "convex")]
+    u = np.empty((1 + 3 * len(framed), 3))
+    u[0] = axis / norm
+    for k, rot in enumerate(framed):
+        # Each axis of the solid's frame (a box's face normals; a mesh's frame,
+        # in which links are long and thin), turned to point from a to b.
+        signs = rot.T @ axis
+        u[1 + 3 * k:4 + 3 * k] = (rot * np.where(signs < 0, -1.0, 1.0)).T
     return float(-(a.supports(u) + b.supports(-u)).min())
 
 
