@@ -237,3 +237,30 @@ def test_body_distance_and_planar_pose_gradient(planar):
             minus = checker.body_distance("a", pose(*m[:3]), "post", pose(*m[3:])).distance
             numeric[i] = (plus - minus) / (2 * h)
         np.testing.assert_allclose(c.gradient, numeric, atol=5e-4)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(("name", "activation"), [("panda", 0.1), ("planar", 0.4),
+                                                  ("kuka", 0.1)])
+def test_signed_distances_match_pybullet_long_sweep(name, activation, request):
+    world, checker = request.getfixturevalue(name)
+    assert _compare_with_pybullet(world, checker, _random_qs(world, 2000, seed=21),
+                                  activation) > 1000
+
+
+@pytest.mark.slow
+def test_held_object_gradients_long_sweep(panda):
+    world, checker = panda
+    rng = np.random.default_rng(22)
+    checked = 0
+    for q in _random_qs(world, 60, seed=23):
+        grasp = transforms.pose(transforms.rot_z(rng.uniform(-3, 3)), (0.0, 0.0, 0.02))
+        for contact in checker.distances(q, held=("a", grasp), activation=0.05):
+            if not contact.a.startswith("held:"):
+                continue
+            numeric, smooth = _finite_difference(checker, q, contact, held=("a", grasp))
+            if smooth:
+                atol = 2e-4 if contact.distance > 0 else 1e-3
+                np.testing.assert_allclose(contact.gradient, numeric, atol=atol)
+                checked += 1
+    assert checked >= 10
