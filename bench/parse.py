@@ -155,6 +155,10 @@ def _ms(seconds: float) -> str:
     return f"{seconds * 1e3:.2f}"
 
 
+def _seconds(value: float | None) -> str:
+    return "refused" if value is None else f"{value:.1f} s"
+
+
 def report(rows: list[dict], extra: dict, wall: float) -> str:
     common = [r for r in rows if r["ours"] is not None and r["pddl"] is not None
               and r["fd"] is not None]
@@ -205,6 +209,13 @@ def report(rows: list[dict], extra: dict, wall: float) -> str:
         m = {k: statistics.median(r[k] for r in sub) for k in ("ours", "pddl", "fd")}
         lines.append(f"| {domain} | {len(sub)} | {_ms(m['ours'])} | {_ms(m['pddl'])} | "
                      f"{_ms(m['fd'])} | {m['ours'] / m['pddl']:.2f} |")
+    largest = max(rows, key=lambda r: r["bytes"])
+    every = [r for r in rows if r["ours"] is not None]
+    lines += ["", f"Largest file: {largest['domain']}/{largest['file']} "
+              f"({largest['bytes'] / 1e6:.1f} MB): ours {largest['ours'] or float('nan'):.1f} s, "
+              f"`pddl` {_seconds(largest['pddl'])}, Fast Downward {_seconds(largest['fd'])}. "
+              f"Ours over all {len(every)} files: "
+              f"{sum(r['bytes'] for r in every) / 1e6 / sum(r['ours'] for r in every):.2f} MB/s."]
     refused = [r for r in rows if r["pddl"] is None]
     lines += ["", f"`pddl` refuses {len(refused)} files (mostly problems whose requirements "
               "are declared only in their domain, e.g. miconic-fulladl, psr).", ""]
