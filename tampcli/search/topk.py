@@ -5,36 +5,47 @@
 loopless (no state twice in a plan, what `solve` wants). `forbid_prefix`
 removes every later plan that starts with some operator names.
 
-Method. Plans of cost <= B only visit states s with g*(s) + h(s) <= B for
-an admissible h, so `BoundedGraph.explore(B)` (topk_graph.py) expands
-exactly a superset of those, and `distances()` gives d_B(s), the cheapest
-cost from s to a goal *inside* that part. Then partial paths are enumerated
-best-first on f = g + d_B(end). Why the order is exact:
+Method. A bounded A*-like exploration (topk_graph.py) grows the explored part
+of the state space with an admissible h, layer by layer of g + h; on it,
+`distances()` gives every known state s a lower bound d(s) on the cost to a
+goal of *every* plan from s: the exact cheapest cost to a goal while staying
+in the expanded part, and, through a state t not expanded yet, the cost to t
+plus t's admissible h. Partial paths are then enumerated best-first on
+f = g + d(end). Why the order is exact:
 
-- Every plan p of cost <= B lies in the explored part, so each prefix q of p
-  has f(q) = g(q) + d_B(end q) <= cost(p): d_B is admissible for p.
+- d is admissible for every plan, so each prefix q of a plan p has
+  f(q) <= cost(p).
 - The queue holds, for every plan not yet output, an entry standing for one
   of its prefixes (or for an earlier sibling edge of one, see below) whose f
   is <= the plan's cost. So when a finished plan of cost c is popped (f = c,
-  since d_B = 0 at a goal), no plan cheaper than c is left unpopped: plans
-  come out in non-decreasing cost, all of them, ties in a fixed order.
-- d_B is exact inside the explored part, so every popped partial path
-  extends to a plan of cost exactly f: little work is wasted (loopless mode:
-  d_B can be too optimistic when the cheapest continuation revisits a state;
-  still admissible, so still exact, just with some dead branches).
+  since d = 0 at an expanded goal), no plan cheaper than c is left: plans
+  come out in non-decreasing cost, every one of them, ties in a fixed order.
+- A popped path whose end is not expanded yet cannot be extended: the
+  enumeration stops there, the exploration goes further and the enumeration
+  restarts, skipping the plans already out (by cost below the current bound,
+  by identity at it). Each retry doubles the exploration's budget; once the
+  layer g + h <= B is fully expanded, a path that reaches an unexpanded state
+  t has f >= g(t) + h(t) > B, so the enumeration up to B completes.
+- Inside the expanded part d is exact: a popped path extends to a plan of
+  cost exactly f, little work is wasted. At equal f, continuations already
+  known to reach a goal come before those through unexpanded states, so the
+  last layer is often explored only in part (K* gets the same effect by
+  interleaving A* and Eppstein's algorithm). Loopless mode: d can be too
+  optimistic when the cheapest continuation revisits a state; it is still
+  admissible, so still exact, with some dead branches.
 
 Children are not all queued at once: the successor edges of each state are
-sorted by c + d_B(next), and popping the entry for edge i of a path queues
+sorted by c + d(next), and popping the entry for edge i of a path queues
 edge i + 1 of the same path (its f is no smaller) and edge 0 of the
 extended path. The queue grows by at most two entries per pop.
 
-When the queue's smallest f exceeds B, all plans of cost <= B are out; B is
-raised to the smallest value that can matter (the next f in the queue, or
-the smallest g + h still to explore), the graph grows, d_B is recomputed and
-the enumeration restarts, skipping the plans of cost <= the old B that are
-already out. Once the whole reachable space is explored, B is infinite and
-no restart happens again. With zero-cost cycles, infinitely many plans can
-share a cost: the generator then stays in that cost forever, as it must.
+When the queue's smallest f exceeds the bound B, all plans of cost <= B are
+out; B is raised to the smallest value that can matter (the next f in the
+queue, or the smallest g + h still to explore). Once the whole reachable
+space is explored, B is infinite. With zero-cost cycles, infinitely many
+plans can share a cost: the generator then stays in that cost forever, as it
+must. With fractional costs, two plans whose costs differ only by float
+rounding (the same costs summed in another order) may come out either way.
 """
 
 from __future__ import annotations
@@ -97,7 +108,15 @@ class _Path:
         return False
 
 
+@dataclass(frozen=True)
+class _Unexpanded:
+    """An enumeration stopped at this state: the exploration must go further."""
+
+    sid: int
+
+
 _FORBIDDEN = "forbidden"  # marks a trie node whose prefix is forbidden
+_FIRST_CHUNK = 64  # expansions before a layer's first enumeration; doubled on each retry
 
 
 class TopK:
@@ -153,11 +172,20 @@ class TopK:
         try:
             bound = graph.next_key()
             while bound < INF:
-                graph.explore(bound)
-                if graph.complete:
-                    bound = INF
-                self.stats["phases"] += 1
-                next_f = yield from self._enumerate(graph.distances(), bound, done)
+                yielded: set = set()  # plans of cost in (done, bound] already out
+                chunk = _FIRST_CHUNK
+                while True:
+                    finished = graph.explore(bound, chunk)
+                    if graph.complete:
+                        bound = INF
+                    self.stats["phases"] += 1
+                    next_f = yield from self._enumerate(*graph.distances(), bound, done,
+                                                        yielded)
+                    if not isinstance(next_f, _Unexpanded):
+                        break
+                    if finished:  # only float rounding can get here: expand that one
+                        graph.expand_now(next_f.sid)
+                    chunk *= 2
                 done = bound
                 bound = min(next_f, graph.next_key())
             self.stats["status"] = "exhausted"
@@ -166,16 +194,20 @@ class TopK:
         finally:
             self._update_stats()
 
-    def _enumerate(self, dist: list[float], bound: float, done: float):
-        """Yield the plans of cost in (done, bound]; return the next f beyond bound."""
+    def _enumerate(self, dist: list[float], open_end: bytearray, bound: float, done: float,
+                   yielded: set):
+        """Yield the plans of cost in (done, bound] not in `yielded`; return the next f
+        beyond bound, or _Unexpanded on reaching a state not expanded yet."""
         graph, task_ops = self._graph, self.task.operators
         costs, succ, goal = graph.costs, graph.succ, graph.goal
-        edges: dict[int, list[tuple[float, float, int, int]]] = {}
+        # per state, its edges (c + d(next), ends unexpanded, d(next), op, next), sorted:
+        # at equal cost, continuations known to reach a goal come first
+        edges: dict[int, list[tuple[float, int, float, int, int]]] = {}
 
-        def out(sid: int) -> list[tuple[float, float, int, int]]:
+        def out(sid: int) -> list[tuple[float, int, float, int, int]]:
             found = edges.get(sid)
             if found is None:
-                found = sorted((costs[op] + dist[nid], dist[nid], op, nid)
+                found = sorted((costs[op] + dist[nid], open_end[nid], dist[nid], op, nid)
                                for op, nid in succ[sid] if dist[nid] < INF)
                 edges[sid] = found
             return found
@@ -187,18 +219,18 @@ class TopK:
         def push(path: _Path, i: int) -> None:
             lst = out(path.sid)
             if self.loopless:
-                while i < len(lst) and path.visits(lst[i][3]):
+                while i < len(lst) and path.visits(lst[i][4]):
                     i += 1
             if i < len(lst):
-                step, rest, _, _ = lst[i]
-                heapq.heappush(queue, (path.g + step, rest, next(counter), path, i))
+                step, flag, rest, _, _ = lst[i]
+                heapq.heappush(queue, (path.g + step, flag, rest, next(counter), path, i))
                 stats["pushes"] += 1
 
         root = _Path(None, -1, 0, 0.0)
         if dist[0] < INF:
-            heapq.heappush(queue, (dist[0], dist[0], next(counter), None, -1))
+            heapq.heappush(queue, (dist[0], open_end[0], dist[0], next(counter), None, -1))
         while queue and queue[0][0] <= bound:
-            _, _, _, parent, i = heapq.heappop(queue)
+            _, _, _, _, parent, i = heapq.heappop(queue)
             stats["pops"] += 1
             if stats["pops"] % 1024 == 0:
                 self._check_time()
@@ -206,14 +238,19 @@ class TopK:
                 path = root
             else:
                 push(parent, i + 1)
-                _, _, op, nid = edges[parent.sid][i]
+                _, _, _, op, nid = edges[parent.sid][i]
                 path = _Path(parent, op, nid, parent.g + costs[op])
             if self._forbidden(path):
                 continue
+            if succ[path.sid] is None:
+                return _Unexpanded(path.sid)
             if goal[path.sid] and path.g > done:
-                self.stats["plans"] += 1
-                self._update_stats()
-                yield Plan(tuple(task_ops[o] for o in path.operators()), path.g)
+                ops = tuple(path.operators())
+                if ops not in yielded:
+                    yielded.add(ops)
+                    self.stats["plans"] += 1
+                    self._update_stats()
+                    yield Plan(tuple(task_ops[o] for o in ops), path.g)
             push(path, 0)
         return queue[0][0] if queue else INF
 

@@ -1,14 +1,16 @@
 """The part of the state space that can hold plans of cost <= B, grown as B grows.
 
-`BoundedGraph.explore(B)` expands, with an admissible heuristic h, every
-state reached with some g such that g + h(state) <= B, re-expanding a state
-whenever a cheaper g to it is found. Claim: afterwards every state on every
-plan of cost <= B is expanded. Induction along such a plan s0 .. sn: s0 is
-pushed with g = 0, and 0 + h(s0) <= h*(s0) <= B. If s_i was expanded with
-its final g(s_i) <= g_plan(s_i), s_{i+1} was offered g <= g_plan(s_{i+1}),
-and g + h(s_{i+1}) <= g_plan(s_{i+1}) + h*(s_{i+1}) <= B, so it was expanded
-too (with a g that can only have dropped since). Hence the subgraph of
-expanded states (`distances` works on it) contains every plan of cost <= B.
+`BoundedGraph.explore(B)` expands, with an admissible h, every state reached
+with some g such that g + h(state) <= B, re-expanding a state whenever a
+cheaper g to it is found; with a limit it stops earlier, in the same order
+(lowest g + h first, then the deepest). Claim: after a complete
+`explore(B)` every state on every plan of cost <= B is expanded. Induction
+along such a plan s0 .. sn: s0 is pushed with g = 0, and 0 + h(s0) <=
+h*(s0) <= B. If s_i was expanded with its final g(s_i) <= g_plan(s_i),
+s_{i+1} was offered g <= g_plan(s_{i+1}), and g + h(s_{i+1}) <=
+g_plan(s_{i+1}) + h*(s_{i+1}) <= B, so it was expanded too (with a g that
+can only have dropped since). `distances` turns the expanded part into
+lower bounds on the cost to a goal (see topk.py for how they are used).
 
 Heuristic values are computed lazily: a child is queued with a bound known
 from its parent, h(parent) - c(parent, child) (admissible: h(parent) <=
@@ -48,11 +50,12 @@ class BoundedGraph:
         # per state, (op index, successor id) of every applicable op once expanded
         self.succ: list[tuple[tuple[int, int], ...] | None] = []
         self.goal: list[bool] = []
-        self.open: list[tuple[float, float, int, int]] = []  # (key, g, seq, id)
+        # (key, -g, seq, id): among equal keys the deepest first, so that a
+        # layer explored only in part already holds whole paths to goals
+        self.open: list[tuple[float, float, int, int]] = []
         self.seq = 0
         self.expansions = 0
         self.evaluations = 0
-        self.bound = -INF
         self._id(task.init, 0.0, 0.0)
 
     @property
@@ -88,18 +91,24 @@ class BoundedGraph:
         return self.open[0][0] if self.open else INF
 
     def _drop_stale(self) -> None:
-        while self.open and self.open[0][1] > self.g[self.open[0][3]]:
+        while self.open and -self.open[0][1] > self.g[self.open[0][3]]:
             heapq.heappop(self.open)
 
-    def explore(self, bound: float) -> None:
-        """Expand every state whose g + h is <= bound (see the module docstring)."""
-        self.bound = max(self.bound, bound)
+    def explore(self, bound: float, limit: int | None = None) -> bool:
+        """Expand every state whose g + h is <= bound (see the module docstring).
+
+        With `limit`, stop after that many expansions; True when done.
+        """
         successors, index, costs = self.task.successors, self.op_index, self.costs
+        stop = None if limit is None else self.expansions + limit
         while True:
             self._drop_stale()
             if not self.open or self.open[0][0] > bound:
-                return
+                return True
+            if stop is not None and self.expansions >= stop:
+                return False
             key, g, _, sid = heapq.heappop(self.open)
+            g = -g
             h = self.h[sid]
             if h is None:
                 if g + self.hlow[sid] > key:  # a better bound arrived since it was queued
@@ -126,9 +135,26 @@ class BoundedGraph:
                 for op, nid in succ:
                     self._id(self.states[nid], g + costs[op], h - costs[op])
 
+    def expand_now(self, sid: int) -> None:
+        """Expand one state out of the exploration's order (evaluated in full first)."""
+        if self.succ[sid] is not None:
+            return
+        h = self.h[sid]
+        if h is None:
+            h = self._evaluate(sid, INF)
+        if h == INF:
+            return
+        self.expansions += 1
+        index, state, g = self.op_index, self.states[sid], self.g[sid]
+        self.goal[sid] = self.task.is_goal(state)
+        child_bound = self._child_bounds(sid, h)
+        self.succ[sid] = tuple(
+            (index[id(op)], self._id(nxt, g + op.cost, child_bound(index[id(op)])))
+            for op, nxt in self.task.successors(state))
+
     def _requeue(self, key: float, g: float, sid: int) -> None:
         self.seq += 1
-        heapq.heappush(self.open, (key, g, self.seq, sid))
+        heapq.heappush(self.open, (key, -g, self.seq, sid))
 
     def _evaluate(self, sid: int, budget: float) -> float:
         """h of the state, or only a bound above `budget` when that is cheaper.
@@ -168,31 +194,48 @@ class BoundedGraph:
                 charged[op] = charged.get(op, 0.0) + m
         return lambda op: max(h - costs[op], total - charged.get(op, 0.0))
 
-    def distances(self) -> list[float]:
-        """Cheapest cost to a goal, within the expanded part, for every known state."""
+    def lower_bound(self, sid: int) -> float:
+        """The admissible h known for a state (its h, else its lazy bound)."""
+        known = self.h[sid]
+        return known if known is not None else self.hlow[sid]
+
+    def distances(self) -> tuple[list[float], bytearray]:
+        """A lower bound on the cost to a goal of every plan from each known state.
+
+        The cheapest cost to a goal when every continuation stays in the
+        expanded part; a continuation that leaves it at a state not expanded
+        yet counts that state's admissible h (or bound) from there. The
+        second list flags the states whose value comes from such a state
+        (at equal values, a way to a goal wins).
+        """
         n = len(self.states)
         preds: list[list[tuple[float, int]]] = [[] for _ in range(n)]
         costs = self.costs
+        dist = [INF] * n
+        open_end = bytearray(n)
+        heap = []
         for sid, succ in enumerate(self.succ):
             if succ is None:
+                bound = self.lower_bound(sid)
+                if bound < INF:
+                    dist[sid] = bound
+                    open_end[sid] = 1
+                    heap.append((bound, 1, sid))
                 continue
-            for op, nid in succ:
-                if self.succ[nid] is not None:
-                    preds[nid].append((costs[op], sid))
-        dist = [INF] * n
-        heap = []
-        for sid in range(n):
-            if self.succ[sid] is not None and self.goal[sid]:
+            if self.goal[sid]:
                 dist[sid] = 0.0
-                heap.append((0.0, sid))
+                heap.append((0.0, 0, sid))
+            for op, nid in succ:
+                preds[nid].append((costs[op], sid))
         heapq.heapify(heap)
         while heap:
-            d, sid = heapq.heappop(heap)
-            if d > dist[sid]:
+            d, flag, sid = heapq.heappop(heap)
+            if d > dist[sid] or flag > open_end[sid]:
                 continue
             for c, pid in preds[sid]:
                 nd = d + c
-                if nd < dist[pid]:
+                if nd < dist[pid] or (nd == dist[pid] and flag < open_end[pid]):
                     dist[pid] = nd
-                    heapq.heappush(heap, (nd, pid))
-        return dist
+                    open_end[pid] = flag
+                    heapq.heappush(heap, (nd, flag, pid))
+        return dist, open_end

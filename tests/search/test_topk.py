@@ -44,10 +44,12 @@ def all_plans(task, bound: float, loopless: bool,
 def check_against_enumeration(task, k: int, loopless: bool, dom=None, prob=None,
                               max_len: int = 10**9):
     plans = list(itertools.islice(TopK(task, loopless=loopless), k))
-    costs = [p.cost for p in plans]
+    # costs equal up to float rounding (sums of the same costs in another order)
+    costs = [round(p.cost, 9) for p in plans]
     assert costs == sorted(costs)
     bound = costs[-1]
-    reference = all_plans(task, bound, loopless, max_len)
+    reference = sorted((round(c, 9), names)
+                       for c, names in all_plans(task, bound + 1e-6, loopless, max_len))
     # the k cheapest costs are the k smallest of all plans up to the k-th cost
     assert costs == [c for c, _ in reference[:len(costs)]]
     # below the k-th cost the plans themselves must be exactly the same set
@@ -56,12 +58,12 @@ def check_against_enumeration(task, k: int, loopless: bool, dom=None, prob=None,
     assert len(set(got)) == len(got), "a plan came out twice"
     assert below <= set(got)
     for p in plans:
-        assert sum(op.cost for op in p.operators) == p.cost
+        assert sum(op.cost for op in p.operators) == pytest.approx(p.cost)
         if loopless:
             assert loopless_ok(task, p)
         if dom is not None:
             report = validate_plan(dom, prob, list(p.names))
-            assert report.valid and report.cost == p.cost, report.failure
+            assert report.valid and report.cost == pytest.approx(p.cost), report.failure
     return plans
 
 
@@ -150,6 +152,19 @@ def test_toy_standard_mode_with_cycles_costs_and_conditional_effects(hops):
     # with the zero-cost hop cycle n1 <-> n2 there are infinitely many plans
     # of each cost; plans up to 12 steps are enough to fill the first 40
     check_against_enumeration(task, 40, False, dom, prob, max_len=12)
+
+
+def test_fractional_costs():
+    text = TOY_PROBLEM.replace("(free n1 n2) (free n2 n1)", "")
+    for old, new in (("n0 n1) 1", "n0 n1) 0.1"), ("n1 n2) 2", "n1 n2) 0.2"),
+                     ("n2 n3) 1", "n2 n3) 0.7"), ("n0 n2) 4", "n0 n2) 0.3"),
+                     ("n2 n0) 1", "n2 n0) 0.3"), ("n1 n0) 3", "n1 n0) 0.6")):
+        assert old in text
+        text = text.replace(old, new)
+    dom, prob = parser.parse_domain(TOY_DOMAIN), parser.parse_problem(text)
+    task = ground(dom, prob)
+    check_against_enumeration(task, 40, False, dom, prob)
+    check_against_enumeration(task, 10_000, True, dom, prob)
 
 
 @pytest.mark.parametrize("hops", [False, True], ids=["costly-cycles", "zero-cost-cycle"])
