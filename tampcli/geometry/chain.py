@@ -21,6 +21,12 @@ from tampcli.geometry import transforms
 
 REVOLUTE, PRISMATIC, FIXED = 0, 1, 4
 
+# eps[i, j, k]: (o x a)_i = eps[i, j, k] o_j a_k, for a batched cross product in one call.
+_LEVI_CIVITA = np.array([[[0, 0, 0], [0, 0, 1], [0, -1, 0]],
+                         [[0, 0, -1], [0, 0, 0], [1, 0, 0]],
+                         [[0, 1, 0], [-1, 0, 0], [0, 0, 0]]], dtype=float)
+_LEVI_CIVITA.flags.writeable = False
+
 
 @dataclass(frozen=True)
 class ChainLink:
@@ -137,16 +143,12 @@ class Chain:
 
         Revolute: n . (a x (p - o)) = a . (p x n) + (o x a) . n; prismatic: a . n.
         """
-        axes, o = self.joint_axes(frames)
-        a = axes
-        basis = np.zeros((self.n, 6))
-        basis[:, :3] = a
-        basis[:, 3] = o[:, 1] * a[:, 2] - o[:, 2] * a[:, 1]
-        basis[:, 4] = o[:, 2] * a[:, 0] - o[:, 0] * a[:, 2]
-        basis[:, 5] = o[:, 0] * a[:, 1] - o[:, 1] * a[:, 0]
+        axes, origins = self.joint_axes(frames)
+        basis = np.concatenate([axes, np.einsum("ijk,nj,nk->ni", _LEVI_CIVITA, origins, axes)],
+                               axis=1)
         if self._has_prismatic:
             slide = ~self.revolute
-            basis[slide, 3:] = a[slide]
+            basis[slide, 3:] = axes[slide]
             basis[slide, :3] = 0.0
         return basis
 
