@@ -87,7 +87,6 @@ class PDDLLexer(Lexer):
                     line += newlines
                     line_start = pos + skipped.rindex("\n") + 1
             column = start - line_start + 1
-            accepted = states[parser_state.position]
             if kind == "LPAR":
                 atom = None
                 if _shifts(states, parser_state.state_stack, "ATOM", memo):
@@ -109,7 +108,7 @@ class PDDLLexer(Lexer):
                     continue
                 kind = "LPAR"
             elif kind == "BAD":
-                allowed = {name for name in accepted if name.isupper()}
+                allowed = {name for name in states[parser_state.position] if name.isupper()}
                 raise UnexpectedCharacters(text, start, line, column, allowed=allowed,
                                            state=parser_state,
                                            terminals_by_name=self.terminals_by_name)
