@@ -313,6 +313,11 @@ class _DomainChecker:
             raise self.src.error(f"derived predicate {axiom.name} takes {len(pred.params)} "
                                  f"arguments, found {len(axiom.params)}", axiom.span, 1)
         scope = self._params(axiom.params, f"derived predicate {axiom.name}")
+        for i, (param, declared) in enumerate(zip(axiom.params, pred.params, strict=True), 1):
+            if not self.hierarchy.may_fit(param.types, declared.types):
+                raise self.src.error(f"argument {i} of derived predicate {axiom.name}: "
+                                     f"{param.name} is of type {_type_text(param.types)}, "
+                                     f"declared as {_type_text(declared.types)}", param.span)
         self.formula(axiom.body, scope, self.constants, self.src)
 
 

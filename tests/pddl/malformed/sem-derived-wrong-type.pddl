@@ -1,0 +1,6 @@
+(define (domain d)
+  (:requirements :typing :derived-predicates)
+  (:types block place)
+  (:predicates (on ?x - block ?y - block) (above ?x - block ?y - block))
+  (:derived (above ?x - block ?y - place)
+            (on ?x ?x)))
