@@ -124,6 +124,10 @@ class TopK:
 
     def __init__(self, task: Task, loopless: bool = False, time_limit: float | None = None,
                  heuristic: Callable[[frozenset], float] | None = None):
+        """`time_limit`: seconds from now for all the plans together (then the
+        iteration ends and `status` is "limit"). `heuristic`: any admissible
+        one (default: LM-cut with landmarks, or h_max with conditional effects).
+        """
         if time_limit is not None and not time_limit > 0:
             raise UsageError(f"the time limit must be positive, got {time_limit}",
                              key="--time-limit")

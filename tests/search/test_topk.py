@@ -154,6 +154,20 @@ def test_toy_standard_mode_with_cycles_costs_and_conditional_effects(hops):
     check_against_enumeration(task, 40, False, dom, prob, max_len=12)
 
 
+def test_derived_predicates_with_landmark_cut():
+    # without the conditional `toggle`, LM-cut (with the axioms relaxed) is the heuristic
+    a = TOY_DOMAIN.index("  (:action toggle")
+    dom = parser.parse_domain(TOY_DOMAIN[:a] + ")")
+    text = TOY_PROBLEM.replace("(:init (at n0)", "(:init (at n0) (lit)")
+    prob = parser.parse_problem(text.replace("(free n1 n2) (free n2 n1)", ""))
+    task = ground(dom, prob)
+    topk = TopK(task)
+    assert type(topk._graph.heuristic).__name__ == "LandmarkCut"
+    assert task.axioms
+    check_against_enumeration(task, 30, False, dom, prob, max_len=12)
+    check_against_enumeration(task, 10_000, True, dom, prob)
+
+
 def test_fractional_costs():
     text = TOY_PROBLEM.replace("(free n1 n2) (free n2 n1)", "")
     for old, new in (("n0 n1) 1", "n0 n1) 0.1"), ("n1 n2) 2", "n1 n2) 0.2"),
