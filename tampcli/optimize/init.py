@@ -19,6 +19,7 @@ from tampcli.optimize.problem import PANDA_OPENING, TrajectoryProblem
 from tampcli.optimize.world_state import grip_of
 
 IK_TOLERANCE = 1e-3
+MOVE_HOVER = 0.08  # m: a move's keyframe starts this far above its target
 QUARTERS = (0.0, 0.5 * math.pi, math.pi, -0.5 * math.pi)
 
 
@@ -161,17 +162,36 @@ def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng,
             q_prev = q1
         elif step.kind == "move":
             (k,) = step.keyframes
-            T = world.tool_pose(q_prev)
+            T = world.tool_pose(q_prev).copy()
             if step.target is not None:
-                from tampcli.optimize.stages import _target_rect
-
-                lo, hi = _target_rect(problem, step.target)
-                T = T.copy()
+                lo, hi = target_rect(problem, step.target)
                 T[:2, 3] = 0.5 * (np.asarray(lo) + np.asarray(hi))
+                if not planar:
+                    # Above the target, with what is held clear of it (resting contact
+                    # has no useful distance gradient).
+                    held_h = 2 * problem.bodies[step.held_before].half[2] \
+                        if step.held_before else 0.0
+                    T[2, 3] = max(T[2, 3], _top_under(problem, step.target) + held_h + MOVE_HOVER)
             q = T[:2, 3].copy() if planar else best_of([(T, None)])[0]
             vals[f"k{k}"] = np.clip(q, world.lower, world.upper)
             q_prev = vals[f"k{k}"]
     return vals, choices
+
+
+def target_rect(problem, target):
+    """(lo, hi) corners of a region, or of the rectangle inside a body's top face."""
+    for r in problem.scene.regions:
+        if r.name == target:
+            return np.asarray(r.lower), np.asarray(r.upper)
+    info = problem.bodies[target]
+    c = np.asarray(info.pose[:2])
+    h = np.array(info.half[:2]) if not info.disk else np.array([info.half[0]] * 2) / np.sqrt(2)
+    return c - h, c + h
+
+
+def _top_under(problem, target) -> float:
+    body = next((r.on for r in problem.scene.regions if r.name == target), target)
+    return problem.bodies[body].top
 
 
 def _angle(v) -> float:

@@ -27,7 +27,7 @@ from tampcli.optimize.result import STAGES, TrajectoryResult
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
 
 GRIP_BOUND = 4 * math.pi
-LAZY_BAND = 0.005  # m: a point between waypoints this close to violating gets its rows
+LAZY_BAND = 0.01  # m: a point between waypoints this close to violating gets its rows
 LAZY_ROUNDS = 3
 RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
 

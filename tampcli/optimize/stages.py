@@ -17,6 +17,7 @@ from tampcli.optimize import constraints as C
 from tampcli.optimize.collide import collision_rows, held_of, row_keys
 from tampcli.optimize.expr import PoseX, RowSet, constant_pose, held_posex, planar_pose
 from tampcli.optimize.grips import held_pose
+from tampcli.optimize.init import target_rect
 from tampcli.optimize.problem import Layout, TrajectoryProblem
 from tampcli.optimize.world_state import grip_of, reach_of, vertical_overlap
 
@@ -167,7 +168,7 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
             if step.target is not None:
                 tool = PoseX(np.concatenate([frame.p, np.zeros(9)]),
                              {f"k{k}": np.vstack([frame.Jp, np.zeros((9, problem.n))])})
-                lo, hi = _target_rect(problem, step.target)
+                lo, hi = target_rect(problem, step.target)
                 C.point_in_rect(rows.ineq, step.name, tool, lo, hi,
                                 f"tool outside {step.target}")
             collide(k, step, _held_spec(problem, held, choices, vals), frame, set())
@@ -195,11 +196,3 @@ def _held_spec(problem, held, choices, vals):
     return held_of(name, grip, t, t_block)
 
 
-def _target_rect(problem, target):
-    for r in problem.scene.regions:
-        if r.name == target:
-            return r.lower, r.upper
-    info = problem.bodies[target]
-    c = np.asarray(info.pose[:2])
-    h = np.array(info.half[:2]) if not info.disk else np.array([info.half[0]] * 2) / np.sqrt(2)
-    return c - h, c + h
