@@ -98,7 +98,12 @@ def test_library_is_complete():
     for name in domains:
         assert (DOMAINS / name / "domain.pddl").is_file(), name
         assert (DOMAINS / name / "README.md").is_file(), name
-        assert list((PROBLEMS / name).glob("p*.pddl")), f"{name} has no problems"
+        problems = sorted((PROBLEMS / name).glob("p*.pddl"))
+        assert problems, f"{name} has no problems"
+        readme = (DOMAINS / name / "README.md").read_text()
+        for problem in problems:
+            assert f"| {problem.stem} " in readme, f"{name}/README.md says nothing of {problem.stem}"
+        assert "tampcli " in readme, f"{name}/README.md shows no command"
     assert set(IDS) == set(EXPECTED), "EXPECTED must list exactly the problems on disk"
 
 
