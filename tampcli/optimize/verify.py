@@ -18,7 +18,7 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.optimize.bodies import REST_TOLERANCE
-from tampcli.optimize.problem import TrajectoryProblem
+from tampcli.optimize.problem import PUSH_STANDOFF, TrajectoryProblem
 
 PENETRATION = 1e-3  # m: deeper is a collision (FCL's own accuracy is ~1e-4)
 RIGID = 2e-3  # m / rad: a held object's drift relative to the tool
@@ -150,6 +150,9 @@ def _check_objects(problem: TrajectoryProblem, result) -> list[str]:
         after = poses[step.obj][pi + 1] if step.obj else None
         if step.kind == "grasp":
             out += _check_grasp(problem, step, world.tool_pose(traj[phase.end]), after)
+        if step.kind == "push":
+            out += _check_push(problem, step, world.tool_pose(traj[phase.start]),
+                               poses[step.obj][pi])
         if step.kind in ("place", "push"):
             out += _check_rest(problem, step, after, poses, pi + 1, regions)
     return out
@@ -174,6 +177,20 @@ def _check_grasp(problem, step, tool, obj) -> list[str]:
         return [f"{step.name}: the grasp point is outside {step.obj}"]
     if tool[2, 2] > -0.99:
         return [f"{step.name}: the gripper does not point down"]
+    return []
+
+
+def _check_push(problem, step, tool, obj) -> list[str]:
+    """The pusher starts against the object: within its half extent plus the pusher."""
+    info = problem.bodies[step.obj]
+    d = tool[:3, 3] - obj[:3, 3]
+    reach = max(info.half[0], info.half[1]) + 2e-3
+    reach += problem.scene.robot.radius if problem.planar else PUSH_STANDOFF
+    gap = math.hypot(d[0], d[1]) - reach
+    if gap > 0:
+        return [f"{step.name}: the push starts {100 * gap:.1f} cm away from {step.obj}"]
+    if not problem.planar and abs(d[2]) > info.half[2]:
+        return [f"{step.name}: the push starts above or below {step.obj}"]
     return []
 
 
