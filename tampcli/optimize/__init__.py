@@ -1,0 +1,16 @@
+"""Trajectory optimization for a fixed skeleton: the seed's V(d) (sections 2, 5).
+
+For a fixed sequence of actions the continuous problem is an ordinary NLP,
+solved with SLSQP and exact Jacobians, in three stages of growing cost:
+
+    problem.lower(skeleton, scene, modes, world, options) -> TrajectoryProblem
+    solve.solve(problem, "final" | "keyframes" | "path", warm) -> TrajectoryResult
+    verify.verify(problem, result) -> [violations in words]
+
+Modules: options (OptimizeOptions), problem (lowering, variable layout),
+bodies (extents, supports), grips (tool frame, held objects), expr (values
+with Jacobians over named variable blocks), constraints (placement, grasp,
+reach rows), collide (collision rows), stages (final / keyframe NLPs), path
+(per-phase path NLPs, via points), init (IK keyframes), nlp (the SLSQP
+driver), assemble (trajectory, phases, object poses), verify, result.
+"""
