@@ -28,6 +28,7 @@ class NlpOutcome:
     iterations: int
     kkt: float | None
     message: str
+    stopped: str | None = None  # "time" | "iterations" | "stall" when SLSQP did not finish
 
 
 class _Stop(Exception):
@@ -142,7 +143,7 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
         value = eq[i] if kind == "eq" else ineq[i]
         worst = (leq if kind == "eq" else lin)[i].words(value)
     kkt = _kkt(grad, eq, jeq, ineq, jin, x, bounds) if status == "solved" else None
-    return NlpOutcome(x, status, float(cost), v, worst, iterations, kkt, message)
+    return NlpOutcome(x, status, float(cost), v, worst, iterations, kkt, message, reason)
 
 
 def _kkt(grad, eq, jeq, ineq, jin, x, bounds) -> float:

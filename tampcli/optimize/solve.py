@@ -188,6 +188,11 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
     if out.status != "solved":
         return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
                           keyframes=kf, choices=choices, placements=placements)
+    if out.stopped == "time":
+        # Feasible but far from converged: its cost would be a meaningless bound.
+        return run.result("limit", violation=out.violation, keyframes=kf, choices=choices,
+                          placements=placements, worst_constraint="time limit reached before "
+                          "the keyframe NLP converged")
     return run.result("solved", cost=out.cost, phase_costs=phase_costs,
                       violation=out.violation, kkt_residual=out.kkt, keyframes=kf,
                       choices=choices, placements=placements)

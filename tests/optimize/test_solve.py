@@ -133,3 +133,12 @@ def test_warm_start_from_a_solved_prefix(planar):
     assert set(warm.keyframes) <= set(result.keyframes)
     path = solve(full, "path", result)
     assert path.solved and verify(full, path) == []
+
+
+def test_time_limit_gives_limit_not_an_exception(wall):
+    scene, modes, world = wall
+    problem = lower(ops("(pick a start)", "(place a goal)"), scene, modes, world,
+                    OptimizeOptions(time_limit=0.01))
+    result = solve(problem, "path")
+    assert result.status == "limit"
+    assert result.worst_constraint
