@@ -68,6 +68,10 @@ def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: d
         oinfo = problem.bodies[other]
         if vertical_overlap(z, info.half[2], heights[other], oinfo.half[2]):
             C.apart_disks(rows.ineq, name, P, info.radius, Q, oinfo.radius, other)
+    # Against fixed bodies the object's inscribed circle: these rows steer the
+    # placement (and decide the "final" stage); the keyframe stage's collision
+    # rows then check the true shapes, so a circumscribed circle would only
+    # reject tight placements that are feasible.
     for other, oinfo in problem.bodies.items():
         if oinfo.fixed and other != step.support and vertical_overlap(
                 z, info.half[2], oinfo.pose[2], oinfo.half[2]):
