@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from tampcli.optimize.bodies import body_info, start_support
+from tampcli.optimize.bodies import REST_TOLERANCE, body_info, start_support
 from tampcli.optimize.options import OptimizeOptions
 
 GEOMETRIC = ("grasp", "place", "push", "move")
@@ -152,12 +152,14 @@ def _lower_steps(skeleton, scene, modes, domain, infos, supports, planar):
     rest_z = {n: info.pose[2] for n, info in infos.items()}
     last_contact: frozenset[str] = frozenset()  # bodies touched at the previous keyframe
     regions = {r.name: r for r in scene.regions}
-    support_at_grasp: dict[str, str | None] = {}
 
     def motion(step_index, kind, attached, grip, enter, sliding=()):
         if planar and kind == "carry":
-            # The planar robot cannot lift: what it carries slides on the table.
-            sliding = {support_at_grasp[attached]}
+            # The planar robot cannot lift: what it carries slides over every
+            # surface at the height of its bottom (across tables that touch).
+            bottom = rest_z[attached] - infos[attached].half[2]
+            sliding = {n for n, b in infos.items()
+                       if n != attached and abs(b.top - bottom) <= REST_TOLERANCE}
         m = MotionPhase(len(motions), step_index, attached, grip, kind, frozenset(enter),
                         last_contact, frozenset(sliding) - {None})
         motions.append(m)
@@ -192,7 +194,6 @@ def _lower_steps(skeleton, scene, modes, domain, infos, supports, planar):
             steps.append(Step(i, op.name, kind, obj, held_before=held, held_after=obj,
                               grasp_step=i, keyframes=(k,)))
             held, held_grip = obj, i
-            support_at_grasp[obj] = support.get(obj)
             if planar:
                 grip_params.append(i)
             support[obj] = None
