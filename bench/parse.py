@@ -156,7 +156,9 @@ def _ms(seconds: float) -> str:
 
 
 def _seconds(value: float | None) -> str:
-    return "refused" if value is None else f"{value:.1f} s"
+    if value is None:
+        return "refused"
+    return f"{value:.2f} s" if value >= 1 else f"{value * 1e3:.1f} ms"
 
 
 def report(rows: list[dict], extra: dict, wall: float) -> str:
@@ -212,7 +214,7 @@ def report(rows: list[dict], extra: dict, wall: float) -> str:
     largest = max(rows, key=lambda r: r["bytes"])
     every = [r for r in rows if r["ours"] is not None]
     lines += ["", f"Largest file: {largest['domain']}/{largest['file']} "
-              f"({largest['bytes'] / 1e6:.1f} MB): ours {largest['ours'] or float('nan'):.1f} s, "
+              f"({largest['bytes'] / 1e6:.1f} MB): ours {_seconds(largest['ours'])}, "
               f"`pddl` {_seconds(largest['pddl'])}, Fast Downward {_seconds(largest['fd'])}. "
               f"Ours over all {len(every)} files: "
               f"{sum(r['bytes'] for r in every) / 1e6 / sum(r['ours'] for r in every):.2f} MB/s."]
