@@ -383,8 +383,6 @@ def test_loader_accepts_scene_and_modes(problem):
 SOLVER_GAPS = {
     "planar-push/p02": "a planar carry may slide only on the body it was grasped from, "
                        "so crossing onto the side table counts as a collision",
-    "arm-hanoi/p02": "keyframe NLP: fingers end 0.8 cm above a platform (margin 1 cm) "
-                     "when picking the small disc",
     "arm-kitchen/p01": "keyframe NLP rejects the 10-action skeletons on violations of 1 mm "
                        "or less (held cabbage vs stove top, tool vs region) and returns an "
                        "11-action plan",
