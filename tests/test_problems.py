@@ -137,6 +137,19 @@ def test_plan_finds_the_optimal_cost(cli, problem):
     assert result["plans"][0]["cost"] == EXPECTED[_key(problem)][0]
 
 
+def test_symbolic_batch_finds_every_domain(cli, tmp_path):
+    """`batch` finds each problem's domain in this layout (../../domains/NAME/)."""
+    out = tmp_path / "results.jsonl"
+    run = cli("batch", "--quiet", "--symbolic", "--jobs", "1", "--time-limit", "60",
+              "--out", out, PROBLEMS)
+    assert run.code == 0, run.err
+    rows = {_key(Path(r["problem"])): r for r in map(json.loads, out.read_text().splitlines())}
+    assert set(rows) == set(EXPECTED)
+    for key, row in rows.items():
+        assert row["status"] == "solved", (key, row["error"])
+        assert row["cost"] >= EXPECTED[key][0], key
+
+
 @pytest.mark.parametrize("problem", ALL, ids=IDS)
 def test_scene_and_modes_go_together(problem):
     assert _scene_file(problem).is_file() == _geometric(problem)
