@@ -16,11 +16,12 @@ Pairs covered by `CollisionChecker.distances`:
   it slides on), and pairs whose distance q cannot change (base-group links
   vs fixed bodies) unless `static=True`.
 
-Broad phase: world-aligned bounding boxes of all pairs at once, then a
-certified lower bound (the widest gap between the two solids' projections
-on the line between their centres and on the normals of a box's faces); a
-pair goes to the narrow phase (narrow.py: FCL, checked) only when both are
-within `activation`. Distances are signed (negative
+Broad phase, for a batch of configurations at once (`distances_many`): the
+links' frames by one batched forward kinematics, then world-aligned boxes and
+bounding spheres of every (sample, part, body) triple, then the oriented-box
+gap of the survivors (obb.py), all as array operations; only pairs whose
+bounds are within `activation` reach the narrow phase (narrow.py: FCL,
+checked), one query each. Distances are signed (negative
 = penetration depth). `normal` points from a to b; `gradient` = d distance
 / d q = -normal . J_a(point_a) (+ normal . J_b(point_b) when b moves with q).
 """
@@ -33,17 +34,15 @@ from dataclasses import dataclass, field
 import fcl
 import numpy as np
 
-from tampcli.geometry import transforms
-from tampcli.geometry.narrow import Placed, separation_bound, signed_distance
+from tampcli.geometry import obb, transforms
+from tampcli.geometry.narrow import Placed, signed_distance
 from tampcli.geometry.parts import (
     Part,
     body_shapes,
-    box_gaps,
     fcl_object,
     find_support,
     rigid_groups,
     robot_parts,
-    world_boxes,
 )
 from tampcli.geometry.scene import PANDA_READY
 
@@ -62,25 +61,30 @@ class Contact:
 
 
 class _Query:
-    """Per-query state: link frames, joint axes and placed shapes, each computed once."""
+    """Per-configuration state: link frames, joint axes and placed link shapes.
 
-    __slots__ = ("frames", "chain", "_axes", "_placed")
+    `shared` holds the placed shapes of scene bodies, which do not depend on
+    the configuration: one dict for all samples of a batch.
+    """
 
-    def __init__(self, chain, q, static_placed: dict | None = None):
+    __slots__ = ("frames", "chain", "_axes", "_placed", "_shared")
+
+    def __init__(self, chain, frames, shared: dict):
         self.chain = chain
-        self.frames = chain.fk_list(q)
+        self.frames = frames
         self._axes = None
-        # Bodies at their start pose are placed once per checker, not per query.
-        self._placed: dict = dict(static_placed) if static_placed else {}
+        self._placed: dict = {}
+        self._shared = shared
 
     def placed(self, key, part: Part, pose: np.ndarray | None) -> Placed:
-        found = self._placed.get(key)
+        cache = self._shared if isinstance(key, tuple) and key[0] == "body" else self._placed
+        found = cache.get(key)
         if found is None:
             if pose is None:
                 pose = self.frames[part.link]
             t = pose if part.identity_local else pose @ part.shape.local
             found = Placed(part.shape, t)
-            self._placed[key] = found
+            cache[key] = found
         return found
 
     def normal_gradient(self, link: int, point, normal) -> np.ndarray:
@@ -91,6 +95,63 @@ class _Query:
         n0, n1, n2 = normal.tolist()
         v = np.array([p1 * n2 - p2 * n1, p2 * n0 - p0 * n2, p0 * n1 - p1 * n0, n0, n1, n2])
         return (self._axes @ v) * self.chain.moved_mask[link]
+
+
+class _Boxes:
+    """Oriented boxes and bounding spheres of a set of parts, in the world.
+
+    Arrays have leading dimensions (..., k) for k parts: centres (3,), axes
+    (3, 3), half extents (3,), world-aligned half extents (3,), sphere
+    centres (3,) and radii.
+    """
+
+    __slots__ = ("frames", "c", "r", "h", "aabb", "s", "radius", "points")
+
+    def __init__(self, frames, parts: list[Part], local=None):
+        if local is None:
+            local = _local_boxes(parts)
+        center, rot, half, sphere, radius, self.points = local
+        self.frames = frames
+        self.c, self.r = obb.world(frames, center, rot)
+        self.h = half
+        self.aabb = obb.aabb_half(self.r, half)
+        rf = frames[..., :3, :3]
+        self.s = np.einsum("...ij,...j->...i", rf, sphere) + frames[..., :3, 3]
+        self.radius = radius
+
+
+def _local_boxes(parts: list[Part]):
+    return (np.array([p.obb_center for p in parts]).reshape(-1, 3),
+            np.array([p.obb_rot for p in parts]).reshape(-1, 3, 3),
+            np.array([p.obb_half for p in parts]).reshape(-1, 3),
+            np.array([p.shape.center for p in parts]).reshape(-1, 3),
+            np.array([p.shape.radius for p in parts]),
+            obb.padded([p.hull for p in parts]))
+
+
+def _screen(activation, a: _Boxes, ia: tuple, pa, b: _Boxes, ib: tuple, pb_) -> np.ndarray:
+    """Which candidate pairs may be within `activation`: oriented boxes, then hulls.
+
+    `ia`, `ib` index the boxes' arrays (sample and part indices, or part
+    indices alone for unbatched sets); `pa`, `pb_` the part indices.
+    """
+    keep = obb.gaps(a.c[ia], a.r[ia], a.h[pa], b.c[ib], b.r[ib], b.h[pb_]) <= activation
+    if not keep.any():
+        return keep
+    sub_a = tuple(i[keep] for i in ia)
+    sub_b = tuple(i[keep] for i in ib)
+    keep[keep] = obb.hull_gaps(a.frames[sub_a], a.points[pa[keep]], a.r[sub_a],
+                               b.frames[sub_b], b.points[pb_[keep]], b.r[sub_b],
+                               a.c[sub_a], b.c[sub_b]) <= activation
+    return keep
+
+
+def _near(a_c, a_aabb, a_s, a_radius, b_c, b_aabb, b_s, b_radius) -> np.ndarray:
+    """Lower bounds (broadcast shape) from world-aligned boxes and spheres: the larger."""
+    apart = np.abs(a_c - b_c) - a_aabb - b_aabb
+    box = np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=-1))
+    sphere = np.linalg.norm(a_s - b_s, axis=-1) - a_radius - b_radius
+    return np.maximum(box, sphere)
 
 
 class CollisionChecker:
@@ -128,13 +189,10 @@ class CollisionChecker:
         self._flat_of = {}
         for j, (name, _, _) in enumerate(self._flat):
             self._flat_of.setdefault(name, []).append(j)
-        self._box_c = np.array([p.box_center for p in self.link_parts]).reshape(-1, 3)
-        self._box_h = np.array([p.box_half for p in self.link_parts]).reshape(-1, 3)
-        self._body_box_c, self._body_box_h = self._body_boxes(self._start)
-        self._sphere_c = np.array([p.shape.center for p in self.link_parts]).reshape(-1, 3)
-        self._sphere_r = np.array([p.shape.radius for p in self.link_parts])
-        self._body_sphere_c = self._body_spheres(self._start)
-        self._body_sphere_r = np.array([p.shape.radius for _, _, p in self._flat])
+        self._link_index = np.array([p.link for p in self.link_parts], dtype=int)
+        self._link_local = _local_boxes(self.link_parts)
+        self._body_local = _local_boxes([p for _, _, p in self._flat])
+        self._body_start = self._body_boxes(self._start)
         self._static_placed = {
             ("body", name, k): Placed(part.shape, self._start[name] @ part.shape.local)
             for name, k, part in self._flat}
@@ -156,7 +214,7 @@ class CollisionChecker:
         chain = self.world.chain
         parent_group = {i: self.group[link.parent] for i, link in enumerate(chain.links)
                         if link.q_index >= 0}
-        query = _Query(chain, self._default_configuration())
+        query = _Query(chain, chain.fk_list(self._default_configuration()), {})
         pairs = []
         for ia, pa in enumerate(self.link_parts):
             for ib in range(ia + 1, len(self.link_parts)):
@@ -198,84 +256,112 @@ class CollisionChecker:
         pose. `held`: (name, grasp), grasp = the object's pose in the tool
         frame. `ignore`: names ("wall", "body:wall", "link:panda_hand") left out.
         """
-        query = self._query(q, body_poses)
-        frames = query.frames
-        held_name, held_pose = self._held_pose(frames, held)
+        q = np.asarray(q, dtype=float).reshape(1, -1)
+        return self.distances_many(q, body_poses, held, [ignore], activation, static)[0]
+
+    def distances_many(self, qs, body_poses: dict | None = None, held=None,
+                       ignores=None, activation: float = 0.05,
+                       static: bool = False) -> list[list[Contact]]:
+        """`distances` for each row of qs (S, n) at once: one list of contacts per row.
+
+        `ignores`: one set of names per row (or None: nothing ignored); the
+        bodies and the held object are the same for all rows.
+        """
+        qs = np.asarray(qs, dtype=float).reshape(-1, self.n)
+        n_samples = len(qs)
+        ignores = [frozenset()] * n_samples if ignores is None else list(ignores)
+        chain = self.world.chain
+        frames = chain.fk_batch(qs)
+        held_name = held[0] if held is not None else None
         poses = self._body_poses(body_poses)
-        out: list[Contact] = []
+        bodies = self._body_start if not body_poses else self._moved_boxes(body_poses, poses)
+        shared = self._shared_placed(body_poses)
+        queries = [_Query(chain, frames[s], shared) for s in range(n_samples)]
+        out: list[list[Contact]] = [[] for _ in range(n_samples)]
+        usable, columns = self._masks(ignores, held_name)
         parts = self.link_parts
-        usable = (np.array([not _ignored(p, ignore) for p in parts]) if ignore
-                  else self._all_links)
-        # Robot links vs bodies: bounding boxes and spheres of all pairs at once;
-        # each gives a lower bound on the distance, their maximum is used.
-        link_frames = np.array([frames[p.link] for p in parts])
-        link_c, link_h = world_boxes(link_frames, self._box_c, self._box_h)
-        link_s = np.einsum("kij,kj->ki", link_frames[:, :3, :3], self._sphere_c) \
-            + link_frames[:, :3, 3]
-        body_c, body_h, body_s = self._body_box_c, self._body_box_h, self._body_sphere_c
-        columns = np.ones(len(self._flat), dtype=bool)
-        if body_poses:
-            rows = [j for name in body_poses for j in self._flat_of.get(name, ())]
-            if rows:
-                body_c, body_h, body_s = body_c.copy(), body_h.copy(), body_s.copy()
-                body_c[rows], body_h[rows] = self._body_boxes(poses, rows)
-                body_s[rows] = self._body_spheres(poses, rows)
-        for name in (held_name, *ignore):
-            bare = name.partition(":")[2] if name and name.startswith("body:") else name
-            for j in self._flat_of.get(bare, ()):
-                columns[j] = False
-        spheres = (np.linalg.norm(link_s[:, None, :] - body_s[None, :, :], axis=2)
-                   - self._sphere_r[:, None] - self._body_sphere_r[None, :])
-        close = np.maximum(box_gaps(link_c, link_h, body_c, body_h), spheres) <= activation
-        close &= self._covered[bool(static)]
-        close &= usable[:, None] & columns[None, :]
-        for i, j in zip(*np.nonzero(close), strict=True):
+        links = _Boxes(frames[:, self._link_index], parts, self._link_local)
+        # Robot links vs bodies.
+        near = _near(links.c[:, :, None], links.aabb[:, :, None], links.s[:, :, None],
+                     links.radius[None, :, None], bodies.c, bodies.aabb, bodies.s,
+                     bodies.radius) <= activation
+        near &= self._covered[bool(static)] & usable[:, :, None] & columns[:, None, :]
+        s_, i_, j_ = np.nonzero(near)
+        keep = _screen(activation, links, (s_, i_), i_, bodies, (j_,), j_)
+        for s, i, j in zip(s_[keep].tolist(), i_[keep].tolist(), j_[keep].tolist(),
+                           strict=True):
             name, k, bp = self._flat[j]
-            self._pair(query, out, activation, (int(i), parts[i], None),
+            self._pair(queries[s], out[s], activation, (i, parts[i], None),
                        (("body", name, k), bp, poses[name]))
         if held_name is not None:
-            self._held_pairs(query, out, activation, held_name, held_pose, poses,
-                             (link_c, link_h), (body_c, body_h), columns, usable)
-        # Self-collision.
+            self._held_pairs(queries, out, activation, held, frames, poses, links, bodies,
+                             columns, usable)
         if len(self._self_a):
             ia, ib = self._self_a, self._self_b
-            apart = np.abs(link_c[ia] - link_c[ib]) - link_h[ia] - link_h[ib]
-            gaps = np.maximum(
-                np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=1)),
-                np.linalg.norm(link_s[ia] - link_s[ib], axis=1)
-                - self._sphere_r[ia] - self._sphere_r[ib])
-            for k in np.nonzero((gaps <= activation) & usable[ia] & usable[ib])[0]:
-                a, b = int(ia[k]), int(ib[k])
-                self._pair(query, out, activation, (a, parts[a], None), (b, parts[b], None))
+            gap = _near(links.c[:, ia], links.aabb[:, ia], links.s[:, ia], links.radius[ia],
+                        links.c[:, ib], links.aabb[:, ib], links.s[:, ib], links.radius[ib])
+            near = (gap <= activation) & usable[:, ia] & usable[:, ib]
+            s_, k_ = np.nonzero(near)
+            a_, b_ = ia[k_], ib[k_]
+            keep = _screen(activation, links, (s_, a_), a_, links, (s_, b_), b_)
+            for s, a, b in zip(s_[keep].tolist(), a_[keep].tolist(), b_[keep].tolist(),
+                               strict=True):
+                self._pair(queries[s], out[s], activation, (a, parts[a], None),
+                           (b, parts[b], None))
         return out
 
-    def _held_pairs(self, query, out, activation, held_name, held_pose, poses, links, bodies,
+    def _held_pairs(self, queries, out, activation, held, frames, poses, links, bodies,
                     columns, usable):
         """Held object vs bodies and vs links outside the tool's rigid group."""
-        link_c, link_h = links
-        body_c, body_h = bodies
-        for h, hp in enumerate(self._held(held_name)):
-            hc, hh = world_boxes(held_pose[None], hp.box_center[None], hp.box_half[None])
-            held_side = (("held", h), hp, held_pose)
-            near = (box_gaps(hc, hh, body_c, body_h)[0] <= activation) & columns
-            for j in np.nonzero(near)[0]:
-                name, k, bp = self._flat[j]
-                self._pair(query, out, activation, held_side,
-                           (("body", name, k), bp, poses[name]))
-            near = (box_gaps(hc, hh, link_c, link_h)[0] <= activation) & usable
-            for i in np.nonzero(near & ~self._in_tool_group)[0]:
-                self._pair(query, out, activation, held_side, (i, self.link_parts[i], None))
+        name, grasp = held
+        held_poses = frames[:, self._tool] @ np.asarray(grasp, dtype=float)  # (S, 4, 4)
+        parts = self._held(name)
+        boxes = _Boxes(held_poses[:, None], parts)  # (S, H, ...)
+        others = (bodies, columns, self._flat), (links, usable & ~self._in_tool_group, None)
+        for b, mask, flat in others:
+            gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
+                        boxes.radius[None, :, None], b.c[..., None, :, :] if flat is None
+                        else b.c, b.aabb[..., None, :, :] if flat is None else b.aabb,
+                        b.s[..., None, :, :] if flat is None else b.s, b.radius)
+            near = (gap <= activation) & mask[:, None, :]
+            s_, h_, j_ = np.nonzero(near)
+            keep = _screen(activation, boxes, (s_, h_), h_, b,
+                           (s_, j_) if flat is None else (j_,), j_)
+            for s, h, j in zip(s_[keep].tolist(), h_[keep].tolist(), j_[keep].tolist(),
+                               strict=True):
+                side_a = (("held", h), parts[h], held_poses[s])
+                if flat is None:
+                    side_b = (j, self.link_parts[j], None)
+                else:
+                    body, k, bp = flat[j]
+                    side_b = (("body", body, k), bp, poses[body])
+                self._pair(queries[s], out[s], activation, side_a, side_b)
 
     def _pair(self, query, out, activation, side_a, side_b) -> None:
-        """Narrow phase of one pair if its certified lower bound is within activation."""
+        """Narrow phase of one pair that passed the broad phase."""
         key_a, pa, pose_a = side_a
         key_b, pb_, pose_b = side_b
         a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
-        if separation_bound(a, b) > activation:
-            return
         contact = self._contact(query, pa, a, pb_, b)
         if contact.distance <= activation:
             out.append(contact)
+
+    def _masks(self, ignores, held_name):
+        """(usable (S, link parts), columns (S, body parts)) from the ignored names."""
+        n_samples = len(ignores)
+        usable = np.ones((n_samples, len(self.link_parts)), dtype=bool)
+        columns = np.ones((n_samples, len(self._flat)), dtype=bool)
+        for j in self._flat_of.get(held_name, ()):
+            columns[:, j] = False
+        for s, ignore in enumerate(ignores):
+            if not ignore:
+                continue
+            usable[s] = [not _ignored(p, ignore) for p in self.link_parts]
+            for name in ignore:
+                bare = name.partition(":")[2] if name.startswith("body:") else name
+                for j in self._flat_of.get(bare, ()):
+                    columns[s, j] = False
+        return usable, columns
 
     def _contact(self, query, pa: Part, a: Placed, pb_: Part, b: Placed) -> Contact:
         d, p1, p2, n = signed_distance(self._request, a, pa.obj, b, pb_.obj)
@@ -343,24 +429,24 @@ class CollisionChecker:
 
     # ------------------------------------------------------------ internals
 
-    def _body_boxes(self, poses, rows=None):
-        flat = self._flat if rows is None else [self._flat[j] for j in rows]
-        if not flat:
-            return np.zeros((0, 3)), np.zeros((0, 3))
-        frames = np.array([poses[name] for name, _, _ in flat])
-        return world_boxes(frames, np.array([p.box_center for _, _, p in flat]),
-                           np.array([p.box_half for _, _, p in flat]))
+    def _body_boxes(self, poses) -> _Boxes:
+        frames = np.array([poses[name] for name, _, _ in self._flat]).reshape(-1, 4, 4)
+        return _Boxes(frames, [p for _, _, p in self._flat], self._body_local)
 
-    def _body_spheres(self, poses, rows=None) -> np.ndarray:
-        flat = self._flat if rows is None else [self._flat[j] for j in rows]
-        return np.array([poses[name][:3, :3] @ p.shape.center + poses[name][:3, 3]
-                         for name, _, p in flat]).reshape(-1, 3)
+    def _moved_boxes(self, body_poses, poses) -> _Boxes:
+        if not any(name in self._flat_of for name in body_poses):
+            return self._body_start
+        return self._body_boxes(poses)
+
+    def _shared_placed(self, body_poses) -> dict:
+        if not body_poses:
+            return dict(self._static_placed)
+        return {key: v for key, v in self._static_placed.items() if key[1] not in body_poses}
 
     def _query(self, q, body_poses) -> _Query:
-        placed = self._static_placed
-        if body_poses:
-            placed = {key: v for key, v in placed.items() if key[1] not in body_poses}
-        return _Query(self.world.chain, np.asarray(q, dtype=float), placed)
+        chain = self.world.chain
+        return _Query(chain, chain.fk_list(np.asarray(q, dtype=float)),
+                      self._shared_placed(body_poses))
 
     def _held_pose(self, frames, held):
         if held is None:

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import fcl
 import numpy as np
 
-from tampcli.geometry import transforms
+from tampcli.geometry import obb, transforms
 from tampcli.geometry.shapes import Shape, fcl_transform, mesh_hulls, primitive
 from tampcli.geometry.shapes import pybullet_link_shapes as link_shapes
 
@@ -29,31 +29,15 @@ class Part:
     link: int = -1  # chain index for robot shapes
     body: str | None = None
     identity_local: bool = False  # the shape frame is the owner's frame (skip a product)
-    box_center: np.ndarray = None  # (3,) bounding box centre in the owner's frame
-    box_half: np.ndarray = None  # (3,) its half extents (axes of the owner's frame)
+    obb_center: np.ndarray = None  # (3,) a tight oriented box around the solid, owner frame
+    obb_rot: np.ndarray = None  # (3, 3) its axes (columns)
+    obb_half: np.ndarray = None  # (3,) its half extents
+    hull: np.ndarray = None  # (V, 3) owner-frame points whose hull contains the solid
 
     def __post_init__(self):
         self.identity_local = bool(np.allclose(self.shape.local, np.eye(4), atol=1e-12))
-        center, half = self.shape.local_box()
-        rot, pos = self.shape.local[:3, :3], self.shape.local[:3, 3]
-        self.box_center = rot @ center + pos
-        self.box_half = np.abs(rot) @ half
-
-
-def world_boxes(frames: np.ndarray, centers: np.ndarray, halves: np.ndarray):
-    """World axis-aligned boxes (centres, half extents) of boxes given in owner frames.
-
-    frames (k, 4, 4), centers and halves (k, 3).
-    """
-    rot = frames[:, :3, :3]
-    return (np.einsum("kij,kj->ki", rot, centers) + frames[:, :3, 3],
-            np.einsum("kij,kj->ki", np.abs(rot), halves))
-
-
-def box_gaps(ca, ha, cb, hb) -> np.ndarray:
-    """(len(a), len(b)) lower bounds on the distances between two sets of boxes."""
-    apart = np.abs(ca[:, None, :] - cb[None, :, :]) - ha[:, None, :] - hb[None, :, :]
-    return np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=2))
+        self.obb_center, self.obb_rot, self.obb_half = obb.fit(self.shape)
+        self.hull = obb.hull_points(self.shape, self.obb_center, self.obb_rot, self.obb_half)
 
 
 def fcl_object(shape: Shape) -> fcl.CollisionObject:

@@ -32,17 +32,6 @@ class Shape:
     size: tuple[float, ...] = ()  # box extents; (radius, height); (radius,)
     vertices: np.ndarray | None = None  # convex only, in the shape's own frame
 
-    def local_box(self) -> tuple[np.ndarray, np.ndarray]:
-        """Centre and half extents of an axis-aligned box around the solid, own frame."""
-        if self.vertices is not None:
-            lo, hi = self.vertices.min(axis=0), self.vertices.max(axis=0)
-            return 0.5 * (lo + hi), 0.5 * (hi - lo)
-        if self.kind == "sphere":
-            return np.zeros(3), np.full(3, self.size[0])
-        r, h = self.size
-        extra = r if self.kind == "capsule" else 0.0
-        return np.zeros(3), np.array([r, r, 0.5 * h + extra])
-
     def support(self, direction_local: np.ndarray) -> float:
         """max over the solid of direction . x, in the shape's own frame."""
         u = direction_local

@@ -47,6 +47,15 @@ def _short(name: str) -> str:
     return name.partition(":")[2] or name
 
 
+def body_matrices(poses: dict[str, PoseX]) -> dict[str, np.ndarray]:
+    return {name: P.matrix() for name, P in poses.items()}
+
+
+def held_spec(held: Held | None):
+    """What the checker takes for a held object: (name, grasp) or None."""
+    return (held.name, held.grasp) if held is not None else None
+
+
 def collision_rows(rows: RowSet, step: str, checker, q, q_weights, frame: Frame | None,
                    held: Held | None, poses: dict[str, PoseX], keys: list[str], ignore,
                    activation: float, margin: float) -> None:
@@ -55,9 +64,15 @@ def collision_rows(rows: RowSet, step: str, checker, q, q_weights, frame: Frame 
     `q_weights`: [(block, weight)] whose weighted sum is q (one block at a keyframe;
     two at a point between waypoints). `poses`: bodies not at their start pose.
     """
-    matrices = {name: P.matrix() for name, P in poses.items()}
-    contacts = checker.distances(q, matrices, (held.name, held.grasp) if held else None,
-                                 frozenset(ignore), activation)
+    contacts = checker.distances(q, body_matrices(poses), held_spec(held), frozenset(ignore),
+                                 activation)
+    contact_rows(rows, step, contacts, q_weights, frame, held, poses, keys, activation, margin)
+
+
+def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | None,
+                 held: Held | None, poses: dict[str, PoseX], keys: list[str],
+                 activation: float, margin: float) -> None:
+    """The rows of `collision_rows` from contacts the checker already computed."""
     best: dict[str, object] = {}
     for c in contacts:
         k = _key(c)

@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from tampcli.optimize import constraints as C
-from tampcli.optimize.collide import Held, collision_rows, row_keys
+from tampcli.optimize.collide import Held, body_matrices, contact_rows, held_spec, row_keys
 from tampcli.optimize.expr import PoseX, held_posex
 from tampcli.optimize.grips import held_pose
 from tampcli.optimize.problem import Layout, MotionPhase, TrajectoryProblem
@@ -60,6 +60,14 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     def block(i):
         return f"w{i}" if 0 < i < T else None
 
+    ignores = [_ignored(m, tau, T) for tau, _, _ in pts]
+    weights = [[(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
+                if b is not None and wgt > 0] for _, i, s in pts]
+    where = np.array([i for _, i, _ in pts], dtype=int)
+    frac = np.array([s for _, _, s in pts])[:, None]
+    matrices = body_matrices(poses)
+    spec = held_spec(held)
+
     def evaluate(x):
         w = x.reshape(T - 1, n)
         qs = np.vstack([q_a, w, q_b])
@@ -68,18 +76,12 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         rows.cost = float(np.sum(d * d))
         for i in range(1, T):
             rows.cost_grad[f"w{i}"] = 2.0 * (d[i - 1] - d[i])
-        for tau, i, s in pts:
-            q = (1 - s) * qs[i] + s * qs[i + 1]
-            weights = [(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
-                       if b is not None and wgt > 0]
-            ignore = set(m.sliding)
-            if tau < 1:
-                ignore |= m.leave_contact
-            if tau > T - 1:
-                ignore |= m.enter_contact
+        samples_q = (1 - frac) * qs[where] + frac * qs[where + 1]
+        contacts = checker.distances_many(samples_q, matrices, spec, ignores, opts.activation)
+        for q, found, wts in zip(samples_q, contacts, weights, strict=True):
             frame = kin.frame(q) if held is not None and held.t_block else None
-            collision_rows(rows.ineq, label, checker, q, weights, frame, held, poses, keys,
-                           ignore, opts.activation, opts.margin)
+            contact_rows(rows.ineq, label, found, wts, frame, held, poses, keys,
+                         opts.activation, opts.margin)
         if m.kind == "push" and not problem.planar:
             for i in range(1, T):
                 frame = kin.frame(qs[i])
@@ -91,23 +93,28 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     return evaluate, layout
 
 
+def _ignored(m: MotionPhase, tau: float, T: int) -> frozenset[str]:
+    """What a sample at position tau of motion m may touch: what it slides along, and
+    the contacts it leaves in its first segment or enters in its last."""
+    ignore = set(m.sliding)
+    if tau < 1:
+        ignore |= m.leave_contact
+    if tau > T - 1:
+        ignore |= m.enter_contact
+    return frozenset(ignore)
+
+
 def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker, T, checks,
                      horizon: float) -> dict[float, float]:
     """tau -> smallest distance at that sample (capped at `horizon`), ignoring as the rows do."""
     w = np.asarray(x).reshape(T - 1, problem.n)
     qs = np.vstack([q_a, w, q_b])
-    out = {}
-    spec = (held.name, held.grasp) if held is not None else None
-    for tau, i, s in samples(T, checks):
-        ignore = set(m.sliding)
-        if tau < 1:
-            ignore |= m.leave_contact
-        if tau > T - 1:
-            ignore |= m.enter_contact
-        q = (1 - s) * qs[i] + s * qs[i + 1]
-        contacts = checker.distances(q, moved, spec, frozenset(ignore), horizon)
-        out[tau] = min((c.distance for c in contacts), default=horizon)
-    return out
+    pts = samples(T, checks)
+    samples_q = np.array([(1 - s) * qs[i] + s * qs[i + 1] for _, i, s in pts])
+    contacts = checker.distances_many(samples_q, moved, held_spec(held),
+                                      [_ignored(m, tau, T) for tau, _, _ in pts], horizon)
+    return {tau: min((c.distance for c in found), default=horizon)
+            for (tau, _, _), found in zip(pts, contacts, strict=True)}
 
 
 def via_points(problem: TrajectoryProblem, q_a, q_b, T: int, held_height: float, moved: dict,

@@ -75,7 +75,7 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
             held = (phase.attached, grasp)
         others = {n: t for n, t in before.items() if n != phase.attached}
         n_seg = phase.end - phase.start
-        worst = None
+        taus, qs, ignores = [], [], []
         for i in range(n_seg):
             a, b = traj[phase.start + i], traj[phase.start + i + 1]
             for j in range(factor + (1 if i == n_seg - 1 else 0)):
@@ -90,10 +90,15 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
                     # Keyframes: what the mode switch touches (the grasped object, the
                     # support under a released one) is contact, not collision.
                     ignore |= m.leave_contact if tau == 0 else m.enter_contact
-                q = (1 - s) * a + s * b
-                for c in checker.distances(q, others, held, frozenset(ignore), 0.0):
-                    if c.distance < -PENETRATION and (worst is None or c.distance < worst[0]):
-                        worst = (c.distance, tau, c)
+                taus.append(tau)
+                qs.append((1 - s) * a + s * b)
+                ignores.append(frozenset(ignore))
+        worst = None
+        for tau, found in zip(taus, checker.distances_many(np.array(qs), others, held, ignores,
+                                                           0.0), strict=True):
+            for c in found:
+                if c.distance < -PENETRATION and (worst is None or c.distance < worst[0]):
+                    worst = (c.distance, tau, c)
         if worst is not None:
             d, tau, c = worst
             out.append((k, f"{_label(problem, k)}: collision {c.a.partition(':')[2]} vs "

@@ -1,0 +1,137 @@
+"""Oriented bounding boxes and hull vertices of the collision parts, and two
+vectorized lower bounds on the distance between many pairs at once.
+
+The broad phase of `collision.py` screens every (sample, part, body) triple
+with world-aligned boxes and spheres; the pairs that survive are screened
+again here, all together: first by the separating-axis gap of their
+oriented boxes (`gaps`), then by the gap between the projections of their
+hull vertices on the same axes (`hull_gaps`, tighter for long links whose
+box is loose). Each bounds the distance between the solids from below, so a
+pair either puts beyond the activation distance is dropped without a
+narrow-phase query: a few numpy expressions for all pairs of a batch
+instead of a Python call per pair.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def fit(shape) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(centre (3,), axes (3, 3) as columns, half extents (3,)) of a box around the
+    solid, in the frame of the shape's owner (the shape's `local` applied)."""
+    rot = np.eye(3)
+    center = np.zeros(3)
+    if shape.kind == "box":
+        half = 0.5 * np.asarray(shape.size, dtype=float)
+    elif shape.kind == "sphere":
+        half = np.full(3, shape.size[0])
+    elif shape.kind in ("cylinder", "capsule"):
+        r, h = shape.size
+        half = np.array([r, r, 0.5 * h + (r if shape.kind == "capsule" else 0.0)])
+    else:
+        center, rot, half = _fit_points(np.asarray(shape.vertices, dtype=float))
+    local_rot, local_pos = shape.local[:3, :3], shape.local[:3, 3]
+    return local_rot @ center + local_pos, local_rot @ rot, half
+
+
+def _fit_points(points: np.ndarray):
+    """The smaller of the frame-aligned box and the box on the principal axes."""
+    best = None
+    candidates = [np.eye(3)]
+    if len(points) >= 4:
+        spread = np.cov((points - points.mean(axis=0)).T)
+        _, vectors = np.linalg.eigh(spread)
+        if np.linalg.det(vectors) < 0:
+            vectors[:, 0] = -vectors[:, 0]
+        candidates.append(vectors)
+    for rot in candidates:
+        local = points @ rot
+        lo, hi = local.min(axis=0), local.max(axis=0)
+        half = 0.5 * (hi - lo)
+        volume = float(np.prod(2 * half))
+        if best is None or volume < best[0]:
+            best = (volume, rot @ (0.5 * (lo + hi)), rot, half)
+    return best[1], best[2], best[3]
+
+
+def world(frames: np.ndarray, center: np.ndarray, rot: np.ndarray):
+    """World centres (..., 3) and axes (..., 3, 3) of boxes given in owner frames.
+
+    frames (..., 4, 4); center (..., 3) and rot (..., 3, 3) broadcast against them.
+    """
+    r = frames[..., :3, :3]
+    return (np.einsum("...ij,...j->...i", r, center) + frames[..., :3, 3],
+            np.matmul(r, rot))
+
+
+def aabb_half(rot: np.ndarray, half: np.ndarray) -> np.ndarray:
+    """Half extents (..., 3) of the world-aligned box around oriented boxes."""
+    return np.einsum("...ij,...j->...i", np.abs(rot), half)
+
+
+def gaps(ca, ra, ha, cb, rb, hb) -> np.ndarray:
+    """(k,) lower bounds on the distances between k pairs of oriented boxes.
+
+    Centres (k, 3), axes (k, 3, 3) (columns), half extents (k, 3). The widest
+    gap between the boxes' projections on the 7 axes tried; negative when they
+    overlap on all of them.
+    """
+    d = cb - ca
+    norm = np.linalg.norm(d, axis=1, keepdims=True)
+    line = np.divide(d, norm, out=np.zeros_like(d), where=norm > 1e-12)
+    axes = np.concatenate([ra.transpose(0, 2, 1), rb.transpose(0, 2, 1), line[:, None, :]],
+                          axis=1)  # (k, 7, 3): unit directions as rows
+    reach_a = np.einsum("kam,km->ka", np.abs(np.matmul(axes, ra)), ha)
+    reach_b = np.einsum("kam,km->ka", np.abs(np.matmul(axes, rb)), hb)
+    apart = np.abs(np.einsum("kai,ki->ka", axes, d))
+    return (apart - reach_a - reach_b).max(axis=1)
+
+
+def hull_points(shape, center, rot, half) -> np.ndarray:
+    """(V, 3) points, in the owner frame, whose convex hull contains the solid.
+
+    A convex solid's own vertices (a box's 8 corners); for curved solids the
+    corners of their oriented box (a superset, so projections still bound).
+    """
+    if shape.vertices is not None:
+        return shape.vertices @ shape.local[:3, :3].T + shape.local[:3, 3]
+    corners = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (-1, 1)],
+                       dtype=float) * half
+    return corners @ rot.T + center
+
+
+def padded(point_sets: list[np.ndarray]) -> np.ndarray:
+    """(k, V, 3): point sets padded to one length by repeating their first point."""
+    size = max((len(p) for p in point_sets), default=1)
+    out = np.empty((len(point_sets), size, 3))
+    for i, p in enumerate(point_sets):
+        out[i, :len(p)] = p
+        out[i, len(p):] = p[0]
+    return out
+
+
+def hull_gaps(frames_a, points_a, ra, frames_b, points_b, rb, ca, cb) -> np.ndarray:
+    """(k,) lower bounds on the distances between k pairs of solids given by points.
+
+    frames (k, 4, 4) of the owners; points (k, V, 3) in the owner frames; ra, rb
+    (k, 3, 3) world axes of the pair's oriented boxes and ca, cb their centres,
+    which give the directions tried (as in `gaps`).
+    """
+    d = cb - ca
+    norm = np.linalg.norm(d, axis=1, keepdims=True)
+    line = np.divide(d, norm, out=np.zeros_like(d), where=norm > 1e-12)
+    axes = np.concatenate([ra.transpose(0, 2, 1), rb.transpose(0, 2, 1), line[:, None, :]],
+                          axis=1)  # (k, 7, 3)
+    axes = axes * np.where(np.einsum("kai,ki->ka", axes, d) < 0, -1.0, 1.0)[:, :, None]
+    top_a = _reach(frames_a, points_a, axes)
+    top_b = _reach(frames_b, points_b, -axes)
+    return (-(top_a + top_b)).max(axis=1)
+
+
+def _reach(frames, points, axes) -> np.ndarray:
+    """(k, 7): max over each solid's points of u . x, for its 7 world directions u."""
+    rot, pos = frames[:, :3, :3], frames[:, :3, 3]
+    local = np.matmul(axes, rot)  # (k, 7, 3): directions in the owner frames
+    return np.matmul(local, points.transpose(0, 2, 1)).max(axis=2) + np.einsum(
+        "kai,ki->ka", axes, pos)
