@@ -152,6 +152,18 @@ class Chain:
             basis[slide, :3] = 0.0
         return basis
 
+    def normal_gradient_basis_batch(self, frames: np.ndarray) -> np.ndarray:
+        """(S, n, 6) `normal_gradient_basis` of each of S sets of fk_batch frames."""
+        joint_frames = frames[:, self.joint_link]  # (S, n, 4, 4)
+        axes = np.einsum("snij,nj->sni", joint_frames[:, :, :3, :3], self.joint_axis)
+        origins = joint_frames[:, :, :3, 3]
+        basis = np.concatenate([axes, np.cross(origins, axes)], axis=2)
+        if self._has_prismatic:
+            slide = ~self.revolute
+            basis[:, slide, 3:] = axes[:, slide]
+            basis[:, slide, :3] = 0.0
+        return basis
+
     def point_jacobian(self, axes, origins, link: int, point) -> np.ndarray:
         """(3, n) d point / d q for a world point rigidly attached to `link`.
 

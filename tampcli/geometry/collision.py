@@ -35,7 +35,7 @@ import fcl
 import numpy as np
 
 from tampcli.geometry import obb, transforms
-from tampcli.geometry.narrow import Placed, signed_distance
+from tampcli.geometry.narrow import TOLERANCE, Placed, checked, fcl_distance, signed_distance
 from tampcli.geometry.parts import (
     Part,
     body_shapes,
@@ -154,6 +154,86 @@ def _near(a_c, a_aabb, a_s, a_radius, b_c, b_aabb, b_s, b_radius) -> np.ndarray:
     return np.maximum(box, sphere)
 
 
+class _Batch:
+    """The narrow phase of one `distances_many` call, run group by group of pairs.
+
+    FCL answers each pair; the check of its answer (the gap of the two
+    solids' projections on its normal, narrow.py) and the joint gradients are
+    then computed for the whole group at once. Pairs whose check fails, or
+    with a curved solid, take narrow.py's scalar path.
+    """
+
+    def __init__(self, checker, queries, frames, activation):
+        self.checker = checker
+        self.queries = queries
+        self.frames = frames
+        self.activation = activation
+        self.out: list[list[Contact]] = [[] for _ in queries]
+        self._basis = None
+
+    def basis(self) -> np.ndarray:
+        """(S, n, 6) gradient bases of all samples (chain.normal_gradient_basis)."""
+        if self._basis is None:
+            self._basis = self.checker.world.chain.normal_gradient_basis_batch(self.frames)
+        return self._basis
+
+    def narrow(self, samples, sides_a, sides_b, geom_a, geom_b) -> None:
+        """Contacts of pairs (samples[t], sides_a[t], sides_b[t]) within activation.
+
+        A side is (cache key, part, owner pose or None for a link); a geometry
+        is (owner frames (k, 4, 4), hull points (k, V, 3), exact (k,), moving
+        chain link (k,) or None when that side does not move with q).
+        """
+        k = len(sides_a)
+        if k == 0:
+            return
+        request = self.checker._request
+        dist = np.empty(k)
+        p1 = np.zeros((k, 3))
+        p2 = np.zeros((k, 3))
+        raws, placed = [], []
+        samples = samples.tolist()
+        for t, (s, (key_a, pa, pose_a), (key_b, pb_, pose_b)) in enumerate(
+                zip(samples, sides_a, sides_b, strict=True)):
+            query = self.queries[s]
+            a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
+            placed.append((a, b))
+            raw = fcl_distance(request, a, pa.obj, b, pb_.obj)
+            raws.append(raw)
+            if raw is None:
+                dist[t] = -math.inf
+            else:
+                dist[t], p1[t], p2[t] = raw
+        diff = p2 - p1
+        norm = np.linalg.norm(diff, axis=1)
+        quick = (dist > TOLERANCE) & (norm > 1e-12) & geom_a[2] & geom_b[2]
+        normal = np.divide(diff, norm[:, None], out=np.zeros_like(diff),
+                           where=norm[:, None] > 1e-12)
+        if quick.any():
+            u = normal[quick][:, None, :]
+            gap = obb.reach(geom_a[0][quick], geom_a[1][quick], u)[:, 0] + obb.reach(
+                geom_b[0][quick], geom_b[1][quick], -u)[:, 0]
+            quick[quick] = dist[quick] + gap <= TOLERANCE
+        for t in np.nonzero(~quick)[0].tolist():
+            dist[t], p1[t], p2[t], normal[t] = checked(raws[t], *placed[t])
+        within = dist <= self.activation
+        if not within.any():
+            return
+        grad = np.zeros((k, self.checker.n))
+        chain = self.checker.world.chain
+        for sign, geom, point in ((-1.0, geom_a, p1), (1.0, geom_b, p2)):
+            moves = geom[3]
+            if moves is None:
+                continue
+            v = np.concatenate([np.cross(point, normal), normal], axis=1)
+            g = np.einsum("kij,kj->ki", self.basis()[samples], v)
+            grad += sign * g * chain.moved_mask[moves]
+        for t in np.nonzero(within)[0].tolist():
+            self.out[samples[t]].append(Contact(sides_a[t][1].owner, sides_b[t][1].owner,
+                                                float(dist[t]), p1[t], p2[t], normal[t],
+                                                grad[t]))
+
+
 class CollisionChecker:
     """Distance queries on a World; holds FCL objects, never touches PyBullet after init."""
 
@@ -191,6 +271,11 @@ class CollisionChecker:
             self._flat_of.setdefault(name, []).append(j)
         self._link_index = np.array([p.link for p in self.link_parts], dtype=int)
         self._link_local = _local_boxes(self.link_parts)
+        # Polytopes (meshes, boxes): their hull points give exact support values.
+        self._exact_link = np.array([p.shape.vertices is not None for p in self.link_parts],
+                                    dtype=bool)
+        self._exact_body = np.array([p.shape.vertices is not None for _, _, p in self._flat],
+                                    dtype=bool)
         self._body_local = _local_boxes([p for _, _, p in self._flat])
         self._body_start = self._body_boxes(self._start)
         self._static_placed = {
@@ -277,10 +362,12 @@ class CollisionChecker:
         bodies = self._body_start if not body_poses else self._moved_boxes(body_poses, poses)
         shared = self._shared_placed(body_poses)
         queries = [_Query(chain, frames[s], shared) for s in range(n_samples)]
-        out: list[list[Contact]] = [[] for _ in range(n_samples)]
+        batch = _Batch(self, queries, frames, activation)
         usable, columns = self._masks(ignores, held_name)
         parts = self.link_parts
         links = _Boxes(frames[:, self._link_index], parts, self._link_local)
+        link_moves = self._link_index
+        body_sides = [(("body", name, k), bp, poses[name]) for name, k, bp in self._flat]
         # Robot links vs bodies.
         near = _near(links.c[:, :, None], links.aabb[:, :, None], links.s[:, :, None],
                      links.radius[None, :, None], bodies.c, bodies.aabb, bodies.s,
@@ -288,14 +375,14 @@ class CollisionChecker:
         near &= self._covered[bool(static)] & usable[:, :, None] & columns[:, None, :]
         s_, i_, j_ = np.nonzero(near)
         keep = _screen(activation, links, (s_, i_), i_, bodies, (j_,), j_)
-        for s, i, j in zip(s_[keep].tolist(), i_[keep].tolist(), j_[keep].tolist(),
-                           strict=True):
-            name, k, bp = self._flat[j]
-            self._pair(queries[s], out[s], activation, (i, parts[i], None),
-                       (("body", name, k), bp, poses[name]))
+        s_, i_, j_ = s_[keep], i_[keep], j_[keep]
+        batch.narrow(s_, [(i, parts[i], None) for i in i_.tolist()],
+                     [body_sides[j] for j in j_.tolist()],
+                     (links.frames[s_, i_], links.points[i_], self._exact_link[i_],
+                      link_moves[i_]),
+                     (bodies.frames[j_], bodies.points[j_], self._exact_body[j_], None))
         if held_name is not None:
-            self._held_pairs(queries, out, activation, held, frames, poses, links, bodies,
-                             columns, usable)
+            self._held_pairs(batch, held, frames, links, bodies, body_sides, columns, usable)
         if len(self._self_a):
             ia, ib = self._self_a, self._self_b
             gap = _near(links.c[:, ia], links.aabb[:, ia], links.s[:, ia], links.radius[ia],
@@ -304,47 +391,51 @@ class CollisionChecker:
             s_, k_ = np.nonzero(near)
             a_, b_ = ia[k_], ib[k_]
             keep = _screen(activation, links, (s_, a_), a_, links, (s_, b_), b_)
-            for s, a, b in zip(s_[keep].tolist(), a_[keep].tolist(), b_[keep].tolist(),
-                               strict=True):
-                self._pair(queries[s], out[s], activation, (a, parts[a], None),
-                           (b, parts[b], None))
-        return out
+            s_, a_, b_ = s_[keep], a_[keep], b_[keep]
+            batch.narrow(s_, [(a, parts[a], None) for a in a_.tolist()],
+                         [(b, parts[b], None) for b in b_.tolist()],
+                         (links.frames[s_, a_], links.points[a_], self._exact_link[a_],
+                          link_moves[a_]),
+                         (links.frames[s_, b_], links.points[b_], self._exact_link[b_],
+                          link_moves[b_]))
+        return batch.out
 
-    def _held_pairs(self, queries, out, activation, held, frames, poses, links, bodies,
-                    columns, usable):
+    def _held_pairs(self, batch, held, frames, links, bodies, body_sides, columns, usable):
         """Held object vs bodies and vs links outside the tool's rigid group."""
         name, grasp = held
+        activation = batch.activation
         held_poses = frames[:, self._tool] @ np.asarray(grasp, dtype=float)  # (S, 4, 4)
         parts = self._held(name)
         boxes = _Boxes(held_poses[:, None], parts)  # (S, H, ...)
-        others = (bodies, columns, self._flat), (links, usable & ~self._in_tool_group, None)
-        for b, mask, flat in others:
-            gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
-                        boxes.radius[None, :, None], b.c[..., None, :, :] if flat is None
-                        else b.c, b.aabb[..., None, :, :] if flat is None else b.aabb,
-                        b.s[..., None, :, :] if flat is None else b.s, b.radius)
-            near = (gap <= activation) & mask[:, None, :]
-            s_, h_, j_ = np.nonzero(near)
+        exact = np.array([p.shape.vertices is not None for p in parts], dtype=bool)
+        tool = np.full(len(parts), self._tool)
+        for to_links in (False, True):
+            b = links if to_links else bodies
+            if to_links:
+                gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
+                            boxes.radius[None, :, None], b.c[:, None], b.aabb[:, None],
+                            b.s[:, None], b.radius)
+                mask = usable & ~self._in_tool_group
+            else:
+                gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
+                            boxes.radius[None, :, None], b.c, b.aabb, b.s, b.radius)
+                mask = columns
+            s_, h_, j_ = np.nonzero((gap <= activation) & mask[:, None, :])
             keep = _screen(activation, boxes, (s_, h_), h_, b,
-                           (s_, j_) if flat is None else (j_,), j_)
-            for s, h, j in zip(s_[keep].tolist(), h_[keep].tolist(), j_[keep].tolist(),
-                               strict=True):
-                side_a = (("held", h), parts[h], held_poses[s])
-                if flat is None:
-                    side_b = (j, self.link_parts[j], None)
-                else:
-                    body, k, bp = flat[j]
-                    side_b = (("body", body, k), bp, poses[body])
-                self._pair(queries[s], out[s], activation, side_a, side_b)
-
-    def _pair(self, query, out, activation, side_a, side_b) -> None:
-        """Narrow phase of one pair that passed the broad phase."""
-        key_a, pa, pose_a = side_a
-        key_b, pb_, pose_b = side_b
-        a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
-        contact = self._contact(query, pa, a, pb_, b)
-        if contact.distance <= activation:
-            out.append(contact)
+                           (s_, j_) if to_links else (j_,), j_)
+            s_, h_, j_ = s_[keep], h_[keep], j_[keep]
+            ib = (s_, j_) if to_links else (j_,)
+            sides_a = [(("held", h), parts[h], held_poses[s])
+                       for s, h in zip(s_.tolist(), h_.tolist(), strict=True)]
+            if to_links:
+                sides_b = [(j, self.link_parts[j], None) for j in j_.tolist()]
+                geom_b = (b.frames[ib], b.points[j_], self._exact_link[j_],
+                          self._link_index[j_])
+            else:
+                sides_b = [body_sides[j] for j in j_.tolist()]
+                geom_b = (b.frames[ib], b.points[j_], self._exact_body[j_], None)
+            batch.narrow(s_, sides_a, sides_b,
+                         (boxes.frames[s_, h_], boxes.points[h_], exact[h_], tool[h_]), geom_b)
 
     def _masks(self, ignores, held_name):
         """(usable (S, link parts), columns (S, body parts)) from the ignored names."""

@@ -88,27 +88,50 @@ def signed_distance(request, a: Placed, oa, b: Placed, ob):
     `oa`, `ob` are the FCL objects of the two shapes; they are moved to the
     placed poses here.
     """
+    raw = fcl_distance(request, a, oa, b, ob)
+    if raw is not None:
+        d, p1, p2 = raw
+        normal = fcl_normal(d, p1, p2)
+        if d > TOLERANCE and normal is not None and d + overlap(a, b, normal) <= TOLERANCE:
+            return d, p1, p2, normal
+    return checked(raw, a, b)
+
+
+def fcl_distance(request, a: Placed, oa, b: Placed, ob):
+    """FCL's answer (distance, witness on a, witness on b), unchecked; None if it throws."""
     oa.setTransform(a.fcl_transform())
     ob.setTransform(b.fcl_transform())
     result = fcl.DistanceResult()  # keeps the smallest value seen: one per query
     try:
         d = float(fcl.distance(oa, ob, request, result))
-    except RuntimeError:
-        # FCL's EPA can throw on degenerate contacts (fcl#319): decide without it.
+    except RuntimeError:  # FCL's EPA can throw on degenerate contacts (fcl#319)
+        return None
+    return d, np.array(result.nearest_points[0]), np.array(result.nearest_points[1])
+
+
+def fcl_normal(d: float, p1, p2):
+    """The unit normal from a to b of FCL's witness points (None when they coincide).
+
+    When penetrating, FCL's witness points lie inside the other solid, so
+    p2 - p1 points from b to a: flipped.
+    """
+    diff = p2 - p1
+    norm = math.sqrt(float(diff @ diff))
+    if norm <= 1e-12:
+        return None
+    return diff / norm if d >= 0 else -diff / norm
+
+
+def checked(raw, a: Placed, b: Placed):
+    """The certified answer from FCL's raw one (or None) when the quick check failed."""
+    if raw is None:
         exact = gjk_distance(a.support_point, b.support_point, b.pos - a.pos, TOLERANCE)
         if exact is not None and exact[0] > TOLERANCE:
             dist, pa, pb = exact
             return dist, pa, pb, (pb - pa) / dist
         return _checked_penetration(0.0, None, None, None, a, b)
-    p1 = np.array(result.nearest_points[0])
-    p2 = np.array(result.nearest_points[1])
-    diff = p2 - p1
-    norm = math.sqrt(float(diff @ diff))
-    normal = None
-    if norm > 1e-12:
-        # When penetrating, FCL's witness points lie inside the other solid,
-        # so p2 - p1 points from b to a: flip it.
-        normal = diff / norm if d >= 0 else -diff / norm
+    d, p1, p2 = raw
+    normal = fcl_normal(d, p1, p2)
     if d > TOLERANCE and normal is not None:
         if d + overlap(a, b, normal) <= TOLERANCE:
             return d, p1, p2, normal
@@ -137,24 +160,6 @@ def overlap(a: Placed, b: Placed, u: np.ndarray) -> float:
 
 
 _WORLD_AXES = np.vstack([np.eye(3), -np.eye(3)])
-
-
-def separation_bound(a: Placed, b: Placed) -> float:
-    """A lower bound on the distance: the widest gap between the solids' projections
-    on the centre line and on the axes of box and mesh frames."""
-    axis = b.pos - a.pos
-    norm = math.sqrt(float(axis @ axis))
-    if norm <= 1e-9:
-        return -math.inf
-    framed = [p.rot for p in (a, b) if p.shape.kind in ("box", "convex")]
-    u = np.empty((1 + 3 * len(framed), 3))
-    u[0] = axis / norm
-    for k, rot in enumerate(framed):
-        # Each axis of the solid's frame (a box's face normals; a mesh's frame,
-        # in which links are long and thin), turned to point from a to b.
-        signs = rot.T @ axis
-        u[1 + 3 * k:4 + 3 * k] = (rot * np.where(signs < 0, -1.0, 1.0)).T
-    return float(-(a.supports(u) + b.supports(-u)).min())
 
 
 def _candidates(a: Placed, b: Placed, normal) -> np.ndarray:

@@ -124,13 +124,16 @@ def hull_gaps(frames_a, points_a, ra, frames_b, points_b, rb, ca, cb) -> np.ndar
     axes = np.concatenate([ra.transpose(0, 2, 1), rb.transpose(0, 2, 1), line[:, None, :]],
                           axis=1)  # (k, 7, 3)
     axes = axes * np.where(np.einsum("kai,ki->ka", axes, d) < 0, -1.0, 1.0)[:, :, None]
-    top_a = _reach(frames_a, points_a, axes)
-    top_b = _reach(frames_b, points_b, -axes)
+    top_a = reach(frames_a, points_a, axes)
+    top_b = reach(frames_b, points_b, -axes)
     return (-(top_a + top_b)).max(axis=1)
 
 
-def _reach(frames, points, axes) -> np.ndarray:
-    """(k, 7): max over each solid's points of u . x, for its 7 world directions u."""
+def reach(frames, points, axes) -> np.ndarray:
+    """(k, m): max over each solid's points of u . x, for its m world directions u.
+
+    frames (k, 4, 4) of the owners, points (k, V, 3) in them, axes (k, m, 3).
+    """
     rot, pos = frames[:, :3, :3], frames[:, :3, 3]
     local = np.matmul(axes, rot)  # (k, 7, 3): directions in the owner frames
     return np.matmul(local, points.transpose(0, 2, 1)).max(axis=2) + np.einsum(
