@@ -126,7 +126,7 @@ class Chain:
         joint_frames = frames[:, self.joint_link]  # (T, n, 4, 4)
         axes = np.einsum("tnij,nj->tni", joint_frames[:, :, :3, :3], self.joint_axis)
         lever = frames[:, link, None, :3, 3] - joint_frames[:, :, :3, 3]
-        linear = np.where(self.revolute[None, :, None], np.cross(axes, lever), axes)
+        linear = np.where(self.revolute[None, :, None], transforms.cross(axes, lever), axes)
         angular = np.where(self.revolute[None, :, None], axes, 0.0)
         mask = self.moved_mask[link][None, :, None]
         return np.concatenate([(linear * mask).transpose(0, 2, 1),
@@ -157,7 +157,7 @@ class Chain:
         joint_frames = frames[:, self.joint_link]  # (S, n, 4, 4)
         axes = np.einsum("snij,nj->sni", joint_frames[:, :, :3, :3], self.joint_axis)
         origins = joint_frames[:, :, :3, 3]
-        basis = np.concatenate([axes, np.cross(origins, axes)], axis=2)
+        basis = np.concatenate([axes, transforms.cross(origins, axes)], axis=2)
         if self._has_prismatic:
             slide = ~self.revolute
             basis[:, slide, 3:] = axes[:, slide]

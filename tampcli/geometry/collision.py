@@ -47,6 +47,8 @@ from tampcli.geometry.parts import (
 from tampcli.geometry.scene import PANDA_READY
 
 SELF_MARGIN = 0.01  # m: link pairs this close in the default configuration are not checked
+SCALAR_PAIRS = 4  # groups of at most this many pairs skip the array set-up (measured)
+HULL_SCREEN = 4  # the hull-point screen pays for itself from this many candidates on
 
 
 @dataclass(frozen=True)
@@ -136,7 +138,7 @@ def _screen(activation, a: _Boxes, ia: tuple, pa, b: _Boxes, ib: tuple, pb_) -> 
     indices alone for unbatched sets); `pa`, `pb_` the part indices.
     """
     keep = obb.gaps(a.c[ia], a.r[ia], a.h[pa], b.c[ib], b.r[ib], b.h[pb_]) <= activation
-    if not keep.any():
+    if keep.sum() < HULL_SCREEN:
         return keep
     sub_a = tuple(i[keep] for i in ia)
     sub_b = tuple(i[keep] for i in ib)
@@ -187,6 +189,9 @@ class _Batch:
         k = len(sides_a)
         if k == 0:
             return
+        if k <= SCALAR_PAIRS:
+            self._scalar(samples.tolist(), sides_a, sides_b, geom_a[3], geom_b[3])
+            return
         request = self.checker._request
         dist = np.empty(k)
         p1 = np.zeros((k, 3))
@@ -225,13 +230,31 @@ class _Batch:
             moves = geom[3]
             if moves is None:
                 continue
-            v = np.concatenate([np.cross(point, normal), normal], axis=1)
+            v = np.concatenate([transforms.cross(point, normal), normal], axis=1)
             g = np.einsum("kij,kj->ki", self.basis()[samples], v)
             grad += sign * g * chain.moved_mask[moves]
         for t in np.nonzero(within)[0].tolist():
             self.out[samples[t]].append(Contact(sides_a[t][1].owner, sides_b[t][1].owner,
                                                 float(dist[t]), p1[t], p2[t], normal[t],
                                                 grad[t]))
+
+    def _scalar(self, samples, sides_a, sides_b, moves_a, moves_b) -> None:
+        """`narrow` pair by pair: cheaper than array set-up for a handful of pairs."""
+        checker = self.checker
+        request = checker._request
+        for t, (s, (key_a, pa, pose_a), (key_b, pb_, pose_b)) in enumerate(
+                zip(samples, sides_a, sides_b, strict=True)):
+            query = self.queries[s]
+            a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
+            d, p1, p2, n = signed_distance(request, a, pa.obj, b, pb_.obj)
+            if d > self.activation:
+                continue
+            grad = np.zeros(checker.n)
+            if moves_a is not None:
+                grad -= query.normal_gradient(int(moves_a[t]), p1, n)
+            if moves_b is not None:
+                grad += query.normal_gradient(int(moves_b[t]), p2, n)
+            self.out[s].append(Contact(pa.owner, pb_.owner, d, p1, p2, n, grad))
 
 
 class CollisionChecker:

@@ -151,3 +151,11 @@ def rotation_log(rot) -> np.ndarray:
             axis = -axis
         return angle * axis / np.linalg.norm(axis)
     return angle / (2.0 * math.sin(angle)) * w
+
+
+def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Row-wise cross product of (..., 3) arrays (np.cross costs several times more)."""
+    a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]
+    b0, b1, b2 = b[..., 0], b[..., 1], b[..., 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=-1)
+
