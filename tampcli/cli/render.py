@@ -22,9 +22,12 @@ def add_parser(p) -> None:
     p.add_argument("--width", type=int, default=640, help="frame width in pixels (default 640)")
     p.add_argument("--height", type=int, default=480, help="frame height in pixels (default 480)")
     p.add_argument("--fps", type=float, default=30.0, help="frames per second (default 30)")
-    p.add_argument("--camera", nargs="+", metavar="FIELD=VALUE",
-                   help="eye=x,y,z target=x,y,z [up=x,y,z] [fov=degrees] (default: the scene's "
-                        "[camera], else framed around the scene)")
+    # One value per flag, so the solution path may come after it.
+    p.add_argument("--camera", action="append", metavar="'FIELD=VALUE ...'",
+                   help="quoted: --camera 'eye=x,y,z target=x,y,z [up=x,y,z] [fov=degrees]', "
+                        "or one field per flag: --camera eye=x,y,z --camera target=x,y,z; "
+                        "fields left out come from the scene's [camera], else the scene is "
+                        "framed automatically")
     p.add_argument("--workers", type=int, default=0,
                    help="render processes (default 0: one per core)")
     p.add_argument("--duration", type=float,

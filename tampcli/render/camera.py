@@ -5,11 +5,15 @@ from __future__ import annotations
 
 import itertools
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
 
 from tampcli.errors import UsageError
+
+# Between two camera fields: a blank, ";" or "," that a field name follows.
+_FIELD_SEPARATOR = re.compile(r"\s*[\s;,]\s*(?=[A-Za-z_]\w*\s*=)")
 
 # Looking from the front-right and above, like the SPEC's example camera.
 _AUTO_DIRECTION = np.array([1.0, 0.75, 0.7])
@@ -29,8 +33,7 @@ class Camera:
             value = getattr(self, name)
             if len(value) != 3 or not all(math.isfinite(v) for v in value):
                 raise UsageError(f"{name} needs 3 finite numbers", key="--camera")
-        if not 1.0 <= self.fov <= 170.0:
-            raise UsageError(f"fov must be in [1, 170] degrees, got {self.fov}", key="--camera")
+        _check_fov(self.fov)
         view = np.subtract(self.target, self.eye)
         if np.linalg.norm(view) < 1e-9:
             raise UsageError("eye and target coincide", key="--camera")
@@ -38,14 +41,17 @@ class Camera:
             raise UsageError("up is parallel to the viewing direction", key="--camera")
 
 
-def parse_camera(tokens: list[str] | str) -> dict:
+def parse_camera(specs: list[str] | str) -> dict:
     """`eye=x,y,z target=x,y,z [up=x,y,z] [fov=deg]` -> the given fields (a dict).
 
-    Fields left out come from the scene or from automatic framing, so a user
-    may move only the eye.
+    `specs` is one string or several (`--camera` may be repeated; a later field
+    wins); fields are separated by spaces, semicolons, or a comma before the
+    next name (`eye=1,2,3,target=0,0,0`). Fields left out come from the scene
+    or from automatic framing, so a user may move only the eye.
     """
-    if isinstance(tokens, str):
-        tokens = tokens.split()
+    if isinstance(specs, str):
+        specs = [specs]
+    tokens = [t for spec in specs for t in _FIELD_SEPARATOR.split(spec.strip()) if t]
     fields: dict = {}
     for token in tokens:
         key, sep, value = token.partition("=")
@@ -60,13 +66,20 @@ def parse_camera(tokens: list[str] | str) -> dict:
         if key == "fov":
             if len(numbers) != 1:
                 raise UsageError("fov takes one number (degrees)", key="--camera")
-            fields[key] = numbers[0]
+            # now, not in Camera: automatic framing divides by tan(fov / 2) first
+            fields[key] = _check_fov(numbers[0])
         else:
             if len(numbers) != 3:
                 raise UsageError(f"{key} needs 3 numbers x,y,z, got {len(numbers)}",
                                  key="--camera")
             fields[key] = numbers
     return fields
+
+
+def _check_fov(fov: float) -> float:
+    if not 1.0 <= fov <= 170.0:
+        raise UsageError(f"fov must be in [1, 170] degrees, got {fov}", key="--camera")
+    return fov
 
 
 def box_corners(lo, hi) -> np.ndarray:
@@ -115,6 +128,8 @@ def auto_camera(points, fov: float = 50.0, aspect: float = 4 / 3,
 def choose_camera(given: dict | None, scene_camera, points, aspect: float,
                   reserve_bottom: float = 0.0) -> Camera:
     """`--camera` fields over the scene's `[camera]` over automatic framing."""
+    if given and "fov" in given:
+        _check_fov(given["fov"])
     base = None
     if scene_camera is not None:
         base = _from_scene(scene_camera)

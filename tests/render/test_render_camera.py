@@ -16,9 +16,16 @@ def test_parse_camera():
     assert parse_camera(["eye=1,2,3", "target=0,0,0.5", "fov=40"]) == {
         "eye": (1.0, 2.0, 3.0), "target": (0.0, 0.0, 0.5), "fov": 40.0}
     assert parse_camera("up=0,1,0") == {"up": (0.0, 1.0, 0.0)}
+    # one string with the fields apart by blanks, ";" or a comma before a name
+    for spec in ("eye=1,2,3 target=0,0,0.5", "eye=1,2,3,target=0,0,0.5",
+                 " eye=1, 2, 3;target=0,0,.5"):
+        assert parse_camera(spec) == {"eye": (1.0, 2.0, 3.0), "target": (0.0, 0.0, 0.5)}, spec
+    assert parse_camera(["eye=1,1,1 fov=30", "eye=2,2,2"]) == {"eye": (2.0, 2.0, 2.0),
+                                                               "fov": 30.0}  # the later wins
 
 
-@pytest.mark.parametrize("spec", ["eye=1,2", "look=1,2,3", "eye", "fov=1,2", "target=x,1,2"])
+@pytest.mark.parametrize("spec", ["eye=1,2", "look=1,2,3", "eye", "fov=1,2", "target=x,1,2",
+                                  "fov=0", "fov=nan", "eye=1,1,1,look=0,0,0"])
 def test_parse_camera_refuses(spec):
     with pytest.raises(UsageError) as err:
         parse_camera(spec)

@@ -43,15 +43,29 @@ def test_default_output_beside_the_solution(cli, tmp_path):
 
 def test_camera_flag(cli, planar_json, tmp_path):
     run = cli("render", planar_json, "--keyframes", tmp_path / "k.png", "--json",
-              "--camera", "eye=1,1,1", "target=0.3,0.3,0", "fov=40", *SMALL)
+              "--camera", "eye=1,1,1 target=0.3,0.3,0", "--camera", "fov=40", *SMALL)
     assert run.code == 0, run.err
     camera = json.loads(run.out)["camera"]
     assert camera["eye"] == [1.0, 1.0, 1.0] and camera["fov"] == 40.0
 
 
+def test_solution_path_after_the_camera(cli, planar_json, tmp_path):
+    """--camera takes one value, so it does not swallow the solution path."""
+    run = cli("render", "--camera", "eye=1,1,1 target=0.3,0.3,0", planar_json,
+              "--keyframes", tmp_path / "k.png", "--json", *SMALL)
+    assert run.code == 0, run.err
+    assert json.loads(run.out)["camera"]["target"] == [0.3, 0.3, 0.0]
+    run = cli("render", "--camera", "eye=1,1,1,target=0.3,0.3,0,fov=30", planar_json,
+              "--keyframes", tmp_path / "k.png", "--json", *SMALL)
+    assert run.code == 0, run.err
+    assert json.loads(run.out)["camera"]["fov"] == 30.0
+
+
 def test_bad_camera_is_usage_error(cli, planar_json, tmp_path):
-    for spec in (["eye=1,1"], ["eyes=1,1,1"], ["eye=a,b,c"], ["eye=0.3,0.3,0", "target=0.3,0.3,0"]):
-        run = cli("render", planar_json, "--keyframes", tmp_path / "k.png", "--camera", *spec)
+    # fov=0 would divide by zero in automatic framing (this scene has no [camera])
+    for spec in ("eye=1,1", "eyes=1,1,1", "eye=a,b,c", "eye=0.3,0.3,0 target=0.3,0.3,0",
+                 "fov=0"):
+        run = cli("render", planar_json, "--keyframes", tmp_path / "k.png", "--camera", spec)
         assert run.code == 2, (spec, run.err)
         assert "--camera" in run.err and "Traceback" not in run.err
 
