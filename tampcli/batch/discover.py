@@ -12,6 +12,9 @@ most specific first:
 
 A problem whose domain cannot be found is still a Job (with `domain=None`),
 so that the batch records it as an `error` line instead of stopping.
+
+Paths in a Job are absolute: a results line must name its problem whatever
+folder the batch ran in, and a Dask worker does not share the batch's cwd.
 """
 
 from __future__ import annotations
@@ -31,16 +34,12 @@ _SNIFF_BYTES = 8192
 
 @dataclass(frozen=True)
 class Job:
-    """One problem to run. `domain` is None when no domain file was found."""
+    """One problem to run, by absolute paths; `domain` is None when no domain
+    file was found."""
 
     problem: str
     domain: str | None
     label: str  # the domain's folder name: rows of the summary are grouped by it
-
-    @property
-    def key(self) -> str:
-        """The identity used by --resume: the problem's absolute path."""
-        return os.path.abspath(self.problem)
 
 
 def discover(paths: list[str]) -> list[Job]:
@@ -63,13 +62,13 @@ def discover(paths: list[str]) -> list[Job]:
     seen: set[str] = set()
     jobs = []
     for problem in problems:
-        key = os.path.abspath(problem)
-        if key in seen:
+        absolute = os.path.abspath(problem)
+        if absolute in seen:
             continue
-        seen.add(key)
+        seen.add(absolute)
         domain = find_domain(problem)
-        domain_path = None if domain is None else str(domain)
-        jobs.append(Job(str(problem), domain_path, domain_label(domain_path, str(problem))))
+        domain_path = None if domain is None else os.path.abspath(domain)
+        jobs.append(Job(absolute, domain_path, domain_label(domain_path, absolute)))
     if not jobs:
         raise UsageError("no problem files found (a problem is a *.pddl file that is not a "
                          "domain file)", path=" ".join(paths) or None)

@@ -5,6 +5,12 @@ O_APPEND descriptor and then fsynced, so a line is either wholly in the file
 or, if the batch dies inside that write, a trailing fragment without its
 newline. Opening the file for `--resume` truncates such a fragment; every
 other line must be a whole result, or the file is refused as not ours.
+
+A line names its problem twice: `problem`, the absolute path, and
+`problem_rel`, the path relative to the results file's folder (`/`-separated).
+`--resume` matches a problem by absolute path first, then by that relative
+path, so it works from any working directory and also after the results file
+and its problem set were moved together to another folder or machine.
 """
 
 from __future__ import annotations
@@ -12,6 +18,8 @@ from __future__ import annotations
 import json
 import math
 import os
+import posixpath
+from collections.abc import Iterable
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
@@ -22,7 +30,7 @@ STATUSES = ("solved", "unsolvable", "limit", "timeout", "error", "crashed")
 
 @dataclass(frozen=True)
 class Result:
-    problem: str
+    problem: str  # absolute path
     domain: str | None
     status: str  # one of STATUSES
     cost: float | None = None
@@ -47,6 +55,7 @@ class ResultsFile:
 
     def __init__(self, path: str, resume: bool):
         self.path = path
+        self.folder = os.path.dirname(os.path.abspath(path))
         self.records: list[dict[str, Any]] = []
         self.repaired_bytes = 0
         if os.path.isdir(path):
@@ -68,12 +77,48 @@ class ResultsFile:
             self.close()
             raise
 
-    def done(self) -> set[str]:
-        """Absolute paths of the problems already recorded."""
-        return {os.path.abspath(r["problem"]) for r in self.records}
+    def latest(self, problems: Iterable[str]) -> dict[str, dict[str, Any]]:
+        """The last record of each of `problems` (absolute paths) that has one.
+
+        Records whose absolute path is one of `problems` are matched first; a
+        problem none of them names is then matched by its path relative to
+        this file's folder (the file was moved with its set).
+        """
+        wanted = set(problems)
+        latest: dict[str, dict[str, Any]] = {}
+        unmatched = []
+        for record in self.records:
+            absolute = os.path.abspath(record["problem"])
+            if absolute in wanted:
+                latest[absolute] = record
+            else:
+                unmatched.append(record)
+        by_relative = {}
+        for problem in wanted - set(latest):
+            relative = self.relative(problem)
+            if relative is not None:
+                by_relative[relative] = problem
+        moved: dict[str, dict[str, Any]] = {}
+        for record in unmatched:
+            problem = by_relative.get(_relative_of(record))
+            if problem is not None:
+                moved[problem] = record
+        return latest | moved
+
+    def relative(self, problem: str) -> str | None:
+        """`problem` relative to this file's folder, `/`-separated; None when
+        there is no such path (another drive on Windows)."""
+        try:
+            relative = os.path.relpath(problem, self.folder)
+        except ValueError:
+            return None
+        return relative.replace(os.sep, "/")
 
     def append(self, result: Result) -> None:
-        record = _strict(result.to_json())
+        fields = result.to_json()
+        fields = {"problem": fields.pop("problem"),
+                  "problem_rel": self.relative(result.problem), **fields}
+        record = _strict(fields)
         line = (json.dumps(record, default=_jsonable, allow_nan=False) + "\n").encode()
         written = os.write(self._fd, line)
         if written != len(line):
@@ -93,6 +138,19 @@ class ResultsFile:
 
     def __exit__(self, *exc) -> None:
         self.close()
+
+
+def _relative_of(record: dict[str, Any]) -> str | None:
+    """A record's path relative to its results file: `problem_rel`, or for a
+    line that has none (written by hand, or by an older tampcli) a relative
+    `problem` taken as relative to the file's folder."""
+    relative = record.get("problem_rel")
+    if isinstance(relative, str):
+        return posixpath.normpath(relative)
+    problem = record["problem"]
+    if os.path.isabs(problem):
+        return None
+    return posixpath.normpath(problem.replace(os.sep, "/"))
 
 
 def _lock(fd: int, path: str) -> None:

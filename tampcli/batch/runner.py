@@ -19,6 +19,7 @@ import sys
 import tempfile
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -28,6 +29,10 @@ from tampcli.batch.results import Result
 from tampcli.errors import UsageError
 
 _POLL_S = 0.05
+# How often a running child asks whether its batch was interrupted (Dask: one
+# round trip to the scheduler each time).
+STOP_POLL_S = 0.5
+STOPPED_MESSAGE = "stopped: the batch was interrupted"
 PROG = "tampcli batch"  # where a bad flag is reported, as argparse does
 
 
@@ -109,14 +114,23 @@ def video_path(job: Job, video_dir: str) -> Path:
     return Path(video_dir) / f"{job.label}-{Path(job.problem).stem}.mp4"
 
 
-def run_job(job: Job, options: RunOptions, live: LiveGroups | None = None) -> Result:
-    """Run one problem in its own process; never raises for what the child does."""
+def run_job(job: Job, options: RunOptions, live: LiveGroups | None = None,
+            stop: Callable[[], bool] | None = None) -> Result:
+    """Run one problem in its own process; never raises for what the child does.
+
+    `stop`, polled every STOP_POLL_S while the child runs, says the batch was
+    interrupted: the child's group is killed and the Result (status crashed,
+    error STOPPED_MESSAGE) is not meant to be recorded. This is how a batch
+    reaches children on Dask workers, where `live` cannot.
+    """
     if job.domain is None:
         looked = Path(job.problem).parent
         return Result(job.problem, None, "error",
                       error=f"{job.problem}: no domain file found (looked for pNN-domain.pddl, "
                             f"domain_pNN.pddl, domain-pNN.pddl and domain.pddl in {looked} "
                             f"and its parent, and ../../domains/{looked.name}/domain.pddl)")
+    if stop is not None and stop():
+        return Result(job.problem, job.domain, "crashed", error=STOPPED_MESSAGE)
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1",
                MKL_NUM_THREADS="1", NO_COLOR="1")
     with tempfile.TemporaryFile() as out, tempfile.TemporaryFile() as err:
@@ -130,7 +144,7 @@ def run_job(job: Job, options: RunOptions, live: LiveGroups | None = None) -> Re
         if live is not None:
             live.add(proc.pid)
         try:
-            timed_out = _wait_exit(proc.pid, start, options.kill_after)
+            ended = _wait_exit(proc.pid, start, options.kill_after, stop)
             # Whatever the child left running in its group goes with it.
             _kill_group(proc.pid)
         finally:
@@ -140,6 +154,10 @@ def run_job(job: Job, options: RunOptions, live: LiveGroups | None = None) -> Re
         wall = time.monotonic() - start
         proc.returncode = os.waitstatus_to_exitcode(status)
         stdout, stderr = _read(out), _read(err)
+    if ended == "stopped":
+        return Result(job.problem, job.domain, "crashed", wall_s=round(wall, 3),
+                      error=STOPPED_MESSAGE)
+    timed_out = ended == "timeout"
     outcome = classify(proc.returncode, timed_out, stdout, stderr, options.time_limit,
                        options.memory_mb)
     return Result(
@@ -157,26 +175,39 @@ def run_job(job: Job, options: RunOptions, live: LiveGroups | None = None) -> Re
     )
 
 
-def _wait_exit(pid: int, start: float, kill_after: float | None) -> bool:
+def _wait_exit(pid: int, start: float, kill_after: float | None,
+               stop: Callable[[], bool] | None = None) -> str:
     """Block until `pid` has exited (left unreaped); kill its group at the
-    deadline. True when it had to be killed."""
+    deadline or when `stop()` says so. Returns "exited", "timeout" or "stopped"."""
     deadline = None if kill_after is None else start + kill_after
+    next_stop_check = time.monotonic() + STOP_POLL_S
     pidfd = _pidfd(pid)
     try:
         while not _exited(pid):
-            remaining = None if deadline is None else deadline - time.monotonic()
+            now = time.monotonic()
+            if stop is not None and now >= next_stop_check:
+                if stop():
+                    _kill_group(pid)
+                    os.waitid(os.P_PID, pid, os.WEXITED | os.WNOWAIT)
+                    return "stopped"
+                next_stop_check = time.monotonic() + STOP_POLL_S
+            remaining = None if deadline is None else deadline - now
             if remaining is not None and remaining <= 0:
                 _kill_group(pid)
                 os.waitid(os.P_PID, pid, os.WEXITED | os.WNOWAIT)
-                return True
+                return "timeout"
+            wait = remaining
+            if stop is not None:
+                until_check = max(0.0, next_stop_check - now)
+                wait = until_check if wait is None else min(wait, until_check)
             if pidfd is not None:
-                select.select([pidfd], [], [], remaining)
+                select.select([pidfd], [], [], wait)
             else:
-                time.sleep(_POLL_S if remaining is None else min(_POLL_S, remaining))
+                time.sleep(_POLL_S if wait is None else min(_POLL_S, wait))
     finally:
         if pidfd is not None:
             os.close(pidfd)
-    return False
+    return "exited"
 
 
 def _exited(pid: int) -> bool:

@@ -7,6 +7,7 @@ written as soon as it is known. The exit code is 0 whenever the batch ran.
 
 from __future__ import annotations
 
+import argparse
 import contextlib
 import os
 import signal
@@ -19,8 +20,20 @@ from tampcli.batch.runner import PROG, RunOptions
 from tampcli.batch.summary import summarize, table, write_csv
 from tampcli.errors import ExitCode, UsageError
 
+# A hung problem must not stall a batch of hundreds: each has a limit unless
+# the user asks for none (`--time-limit none`).
+DEFAULT_TIME_LIMIT_S = 300.0
 DEFAULT_GRACE_S = 5.0
 VIDEO_GRACE_S = 120.0
+
+
+def _seconds_or_none(text: str) -> float | None:
+    if text.strip().lower() == "none":
+        return None
+    try:
+        return float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected seconds or `none`, got {text!r}") from None
 
 
 def add_parser(p) -> None:
@@ -28,8 +41,11 @@ def add_parser(p) -> None:
                    help="problem files or folders (searched recursively)")
     p.add_argument("--jobs", "-j", type=int, default=None,
                    help="problems run at once (default: the number of cores)")
-    p.add_argument("--time-limit", type=float, default=None, metavar="S",
-                   help="seconds per problem, given to the planner; killed at S + --grace")
+    p.add_argument("--time-limit", type=_seconds_or_none, default=DEFAULT_TIME_LIMIT_S,
+                   metavar="S",
+                   help="seconds per problem, given to the planner; killed at S + --grace "
+                        f"(default {DEFAULT_TIME_LIMIT_S:g}; `none`: no limit, and a hung "
+                        "problem stalls the batch)")
     p.add_argument("--grace", type=float, default=None, metavar="S",
                    help="seconds past --time-limit before a problem is killed (default 5; "
                         f"{VIDEO_GRACE_S:g} with --video-dir: the video is rendered after "
@@ -72,8 +88,8 @@ def run(args, ui) -> int:
         if results.repaired_bytes:
             ui.warn(f"{args.out}: cut a torn last line ({results.repaired_bytes} bytes) left "
                     "by an interrupted batch; that problem runs again")
-        done = results.done()
-        todo = largest_first([job for job in jobs if job.key not in done])
+        done = results.latest(job.problem for job in jobs)
+        todo = largest_first([job for job in jobs if job.problem not in done])
         if len(todo) < len(jobs):
             ui.info(f"resuming {args.out}: {len(jobs) - len(todo)} of {len(jobs)} problems "
                     "already recorded")
@@ -92,7 +108,8 @@ def run(args, ui) -> int:
                 from tampcli.batch.local import run_local
 
                 run_local(todo, options, workers, on_result)
-        records = _of_jobs(results.records, jobs)
+        latest = results.latest(job.problem for job in jobs)
+        records = [latest[job.problem] for job in jobs if job.problem in latest]
     if args.csv:
         write_csv(args.csv, records)
     summary = summarize(records)
@@ -133,15 +150,12 @@ def _sigterm_interrupts():
         signal.signal(signal.SIGTERM, previous)
 
 
-def _of_jobs(records: list[dict], jobs) -> list[dict]:
-    """The records of this batch's problems, the last one of each if repeated."""
-    wanted = {job.key for job in jobs}
-    latest = {}
-    for record in records:
-        key = os.path.abspath(record["problem"])
-        if key in wanted:
-            latest[key] = record
-    return list(latest.values())
+def _shown(path: str) -> str:
+    """A problem as progress lines name it: relative to the working directory
+    when it is inside it (results lines keep the absolute path)."""
+    relative = os.path.relpath(path)
+    outside = relative == os.pardir or relative.startswith(os.pardir + os.sep)
+    return path if outside else relative
 
 
 class _Progress:
@@ -178,10 +192,10 @@ class _Progress:
             text = " ".join(f"{s} {self.counts[s]}" for s in STATUSES if self.counts[s])
             self._bar.update(self._task, advance=1, description=text)
             if result.status in ("crashed", "timeout"):
-                self._bar.console.print(f"{result.status}: {result.problem}", markup=False,
-                                        highlight=False)
+                self._bar.console.print(f"{result.status}: {_shown(result.problem)}",
+                                        markup=False, highlight=False)
             return
-        line = f"[{self.count}/{self.total}] {result.status:<10} {result.problem} " \
+        line = f"[{self.count}/{self.total}] {result.status:<10} {_shown(result.problem)} " \
                f"{result.wall_s:.2f} s"
         if result.error:
             line += f"  {result.error.splitlines()[0]}"

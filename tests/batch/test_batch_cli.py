@@ -1,5 +1,6 @@
 """`tampcli batch` end to end, with real children: failures, SIGKILL + resume, Dask."""
 
+import contextlib
 import csv
 import io
 import json
@@ -179,20 +180,64 @@ def test_terminal_shows_a_progress_bar_and_the_summary_table(tmp_path):
     assert "gripper" in shown and "solved" in shown
 
 
-def test_dask_cluster_gives_the_same_statuses_as_local(cli, failing_set, tmp_path):
+@pytest.fixture(scope="module")
+def cluster():
+    """A Dask cluster whose worker is a process of its own, as on a real cluster:
+    jobs are pickled to it and children are started from it. The test hooks
+    are in the worker's environment from its start."""
     distributed = pytest.importorskip("distributed")
-    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=False,
-                                  dashboard_address=None) as cluster:
-        out = tmp_path / "dask.jsonl"
-        run = cli("batch", failing_set, "--symbolic", *LIMITS,
-                  "--out", out, "--scheduler", cluster.scheduler_address, "-q")
-        assert run.code == 0, run.err
-        assert _statuses(out) == EXPECTED
-        # Resume semantics hold on the cluster too: nothing left to run.
-        again = cli("batch", failing_set, "--symbolic", "--resume", "--out", out, "--json",
-                    "--scheduler", cluster.scheduler_address)
-        assert again.code == 0 and json.loads(again.out)["ran"] == 0
-        assert len(_lines(out)) == 4
+    with distributed.LocalCluster(n_workers=1, threads_per_worker=2, processes=True,
+                                  dashboard_address=None,
+                                  env={CRASH_ENV: "boom.pddl", HANG_ENV: "slow.pddl"}) as c:
+        yield c
+
+
+def test_dask_cluster_gives_the_same_statuses_as_local(cli, cluster, failing_set, tmp_path):
+    out = tmp_path / "dask.jsonl"
+    run = cli("batch", failing_set, "--symbolic", *LIMITS,
+              "--out", out, "--scheduler", cluster.scheduler_address, "-q")
+    assert run.code == 0, run.err
+    assert _statuses(out) == EXPECTED
+    by_name = {Path(r["problem"]).name: r for r in _lines(out)}
+    assert by_name["good.pddl"]["cost"] == 11
+    # Resume semantics hold on the cluster too: nothing left to run.
+    again = cli("batch", failing_set, "--symbolic", "--resume", "--out", out, "--json",
+                "--scheduler", cluster.scheduler_address)
+    assert again.code == 0 and json.loads(again.out)["ran"] == 0
+    assert len(_lines(out)) == 4
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGKILL], ids=["SIGTERM", "SIGKILL"])
+def test_a_stopped_cluster_batch_kills_its_children_on_the_workers(cluster, tmp_path, signum):
+    folder = tmp_path / "hang"
+    [slow] = problem_set(folder, ["slow.pddl"])
+    out = tmp_path / "r.jsonl"
+    # A limit far away: what kills the child here is the batch being stopped.
+    batch = subprocess.Popen([sys.executable, "-m", "tampcli", "batch", str(folder), "--symbolic",
+                              "--time-limit", "600", "--out", str(out), "-q",
+                              "--scheduler", cluster.scheduler_address], cwd=ROOT,
+                             stderr=subprocess.PIPE, text=True)
+    marker = f"{HANG_MARKER} {slow}"
+    try:
+        deadline = time.monotonic() + 60
+        while not alive_with(marker) and time.monotonic() < deadline and batch.poll() is None:
+            time.sleep(0.05)
+        assert alive_with(marker), "the hung child never started its grandchild"
+        batch.send_signal(signum)
+        _, err = batch.communicate(timeout=30)
+        if signum == signal.SIGTERM:
+            assert batch.returncode == 130 and "interrupted" in err
+        # The child's command line and its grandchild's both name the problem.
+        assert all_gone(str(slow))
+        # Stopped, not finished: nothing to record.
+        assert out.read_text() == ""
+    finally:
+        # On failure, leave no hour-long sleeper behind (they ignore SIGTERM).
+        if batch.poll() is None:
+            batch.kill()
+        for pid in alive_with(str(slow)):
+            with contextlib.suppress(ProcessLookupError):
+                os.kill(pid, signal.SIGKILL)
 
 
 def test_bad_scheduler_address_is_a_usage_error(cli, tmp_path):
@@ -226,3 +271,72 @@ def test_results_name_problems_so_a_copied_set_resumes_from_its_own_file(cli, tm
     run = cli("batch", second, "--symbolic", "--resume", "--out", out, "--json")
     assert json.loads(run.out)["ran"] == 1
     assert len(_lines(out)) == 2
+
+
+def test_resume_from_another_working_directory_skips_what_is_done(cli, tmp_path, monkeypatch):
+    x = tmp_path / "x"
+    problem_set(x / "set", ["a.pddl", "b.pddl"])
+    monkeypatch.chdir(x)
+    assert cli("batch", "set/a.pddl", "--symbolic", "--out", "r.jsonl").code == 0
+    [first] = _lines(x / "r.jsonl")
+    assert first["problem"] == str(x / "set" / "a.pddl") and first["problem_rel"] == "set/a.pddl"
+    monkeypatch.chdir(tmp_path)
+    run = cli("batch", "x/set", "--symbolic", "--resume", "--out", "x/r.jsonl", "--json")
+    assert run.code == 0, run.err
+    summary = json.loads(run.out)
+    assert summary["ran"] == 1 and summary["skipped"] == 1
+    assert sorted(r["problem"] for r in _lines(x / "r.jsonl")) == [
+        str(x / "set" / "a.pddl"), str(x / "set" / "b.pddl")]
+
+
+def test_a_results_file_moved_with_its_set_still_resumes(cli, tmp_path, monkeypatch):
+    # As when an experiment folder is copied to another machine.
+    old = tmp_path / "machine-a" / "exp"
+    problem_set(old / "set", ["a.pddl", "b.pddl"])
+    monkeypatch.chdir(old)
+    assert cli("batch", "set/a.pddl", "--symbolic", "--out", "r.jsonl").code == 0
+    new = tmp_path / "machine-b" / "exp"
+    shutil.copytree(old, new)
+    shutil.rmtree(old)
+    monkeypatch.chdir(tmp_path)
+    run = cli("batch", new / "set", "--symbolic", "--resume", "--out", new / "r.jsonl", "--json")
+    assert run.code == 0, run.err
+    summary = json.loads(run.out)
+    assert summary["ran"] == 1 and summary["problems"] == 2
+    assert sorted(r["problem_rel"] for r in _lines(new / "r.jsonl")) == ["set/a.pddl",
+                                                                         "set/b.pddl"]
+
+
+def test_without_time_limit_a_hung_problem_is_killed_at_the_default(cli, tmp_path, monkeypatch):
+    import tampcli.cli.batch as batch_cli
+
+    # The default (300 s) made short enough to wait for.
+    monkeypatch.setattr(batch_cli, "DEFAULT_TIME_LIMIT_S", 1.0)
+    [slow] = problem_set(tmp_path / "s", ["slow.pddl"])
+    monkeypatch.setenv(HANG_ENV, "slow.pddl")
+    out = tmp_path / "r.jsonl"
+    run = cli("batch", slow, "--symbolic", "--grace", "0.5", "--out", out, "-q")
+    assert run.code == 0, run.err
+    [record] = _lines(out)
+    assert record["status"] == "timeout" and "time limit (1 s)" in record["error"]
+
+
+@pytest.mark.parametrize("argv, limit", [([], 300.0), (["--time-limit", "7.5"], 7.5),
+                                         (["--time-limit", "none"], None)])
+def test_time_limit_defaults_to_300_s_and_none_lifts_it(cli, tmp_path, monkeypatch, argv,
+                                                          limit):
+    import tampcli.batch.local as local
+
+    seen = []
+    monkeypatch.setattr(local, "run_local", lambda jobs, options, *_: seen.append(options))
+    run = cli("batch", GRIPPER_P01, "--symbolic", "--out", tmp_path / "r.jsonl", *argv)
+    assert run.code == 0, run.err
+    assert [options.time_limit for options in seen] == [limit]
+
+
+def test_help_names_the_default_time_limit(capsys):
+    with pytest.raises(SystemExit):
+        main(["batch", "--help"])
+    shown = " ".join(capsys.readouterr().out.split())
+    assert "--time-limit S seconds per problem" in shown and "(default 300;" in shown
+    assert "`none`: no limit" in shown

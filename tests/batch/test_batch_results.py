@@ -39,11 +39,11 @@ def test_unknown_status_is_refused():
 
 def test_existing_results_need_resume(tmp_path):
     out = tmp_path / "r.jsonl"
-    out.write_text(json.dumps({"problem": "a.pddl"}) + "\n")
+    out.write_text(json.dumps({"problem": str(tmp_path / "a.pddl")}) + "\n")
     with pytest.raises(UsageError, match="--resume"):
         ResultsFile(str(out), resume=False)
     with ResultsFile(str(out), resume=True) as results:
-        assert results.done() == {os.path.abspath("a.pddl")}
+        assert set(results.latest([str(tmp_path / "a.pddl")])) == {str(tmp_path / "a.pddl")}
 
 
 def test_torn_last_line_is_cut_on_resume(tmp_path):
@@ -53,7 +53,8 @@ def test_torn_last_line_is_cut_on_resume(tmp_path):
     out.write_text(good + torn)
     with ResultsFile(str(out), resume=True) as results:
         assert results.repaired_bytes == len(torn)
-        assert results.done() == {os.path.abspath("a.pddl")}
+        assert set(results.latest(map(os.path.abspath, ["a.pddl", "b.pddl"]))) == {
+            os.path.abspath("a.pddl")}
         results.append(_result("b.pddl"))
     assert [json.loads(line)["problem"] for line in out.read_text().splitlines()] == [
         "a.pddl", "b.pddl"]
@@ -99,4 +100,64 @@ def test_a_second_batch_on_the_same_file_is_refused_until_the_first_closes(tmp_p
         with pytest.raises(UsageError, match="another batch"):
             ResultsFile(str(out), resume=True)
     with ResultsFile(str(out), resume=True) as again:
-        assert again.done() == {os.path.abspath("a.pddl")}
+        assert set(again.latest([os.path.abspath("a.pddl")])) == {os.path.abspath("a.pddl")}
+
+
+def test_a_line_names_its_problem_absolute_and_relative_to_the_file(tmp_path):
+    out = tmp_path / "exp" / "r.jsonl"
+    problem = tmp_path / "exp" / "set" / "p1.pddl"
+    with ResultsFile(str(out), resume=False) as results:
+        results.append(_result(str(problem)))
+    record = json.loads(out.read_text())
+    assert list(record)[:2] == ["problem", "problem_rel"]
+    assert record["problem"] == str(problem) and record["problem_rel"] == "set/p1.pddl"
+
+
+def test_resume_matches_by_absolute_path_from_any_working_directory(tmp_path, monkeypatch):
+    out = tmp_path / "r.jsonl"
+    problem = str(tmp_path / "set" / "a.pddl")
+    with ResultsFile(str(out), resume=False) as results:
+        results.append(_result(problem))
+    (tmp_path / "elsewhere").mkdir()
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    with ResultsFile(str(out), resume=True) as results:
+        assert results.latest([problem, str(tmp_path / "set" / "b.pddl")]) == {
+            problem: results.records[0]}
+
+
+def test_a_results_file_moved_with_its_set_matches_by_relative_path(tmp_path):
+    old, new = tmp_path / "machine-a" / "exp", tmp_path / "machine-b" / "runs" / "exp"
+    with ResultsFile(str(old / "r.jsonl"), resume=False) as results:
+        results.append(_result(str(old / "set" / "a.pddl"), cost=1.0))
+        # Outside the file's folder: still relative to it.
+        results.append(_result(str(old.parent / "shared" / "b.pddl"), cost=2.0))
+    new.mkdir(parents=True)
+    (old / "r.jsonl").rename(new / "r.jsonl")
+    moved = [str(new / "set" / "a.pddl"), str(new.parent / "shared" / "b.pddl"),
+             str(new / "set" / "c.pddl")]
+    with ResultsFile(str(new / "r.jsonl"), resume=True) as results:
+        latest = results.latest(moved)
+    assert {p: r["cost"] for p, r in latest.items()} == {moved[0]: 1.0, moved[1]: 2.0}
+
+
+def test_absolute_match_wins_over_a_relative_one_and_the_last_line_wins(tmp_path):
+    here = tmp_path / "here"
+    problem = str(here / "set" / "a.pddl")
+    lines = [{"problem": problem, "problem_rel": "set/a.pddl", "status": "crashed"},
+             {"problem": problem, "problem_rel": "set/a.pddl", "status": "solved"},
+             # From another copy of the set: same relative path, later in the file.
+             {"problem": "/gone/set/a.pddl", "problem_rel": "set/a.pddl", "status": "error"}]
+    here.mkdir()
+    (here / "r.jsonl").write_text("".join(json.dumps(line) + "\n" for line in lines))
+    with ResultsFile(str(here / "r.jsonl"), resume=True) as results:
+        assert results.latest([problem])[problem]["status"] == "solved"
+
+
+def test_a_line_without_problem_rel_is_relative_to_the_file(tmp_path, monkeypatch):
+    # Written by hand, or by a tampcli that recorded paths as given.
+    (tmp_path / "r.jsonl").write_text(json.dumps({"problem": "set/a.pddl"}) + "\n")
+    (tmp_path / "cwd").mkdir()
+    monkeypatch.chdir(tmp_path / "cwd")
+    with ResultsFile(str(tmp_path / "r.jsonl"), resume=True) as results:
+        assert set(results.latest([str(tmp_path / "set" / "a.pddl")])) == {
+            str(tmp_path / "set" / "a.pddl")}
