@@ -102,10 +102,15 @@ class UsageError(InputError):
 
 
 def source_line_at(text: str, line: int | None) -> str | None:
-    """The 1-based `line` of `text`, or None when out of range."""
+    """The 1-based `line` of `text`, or None when out of range.
+
+    Lines end at "\n" only, as the lexers count them (str.splitlines would
+    also split at form feeds and other separators, and show the wrong line);
+    an empty file has one empty line, so an error in it still shows a caret.
+    """
     if line is None or line < 1:
         return None
-    lines = text.splitlines()
+    lines = text.split("\n")
     if line > len(lines):
         return None
-    return lines[line - 1]
+    return lines[line - 1].removesuffix("\r")

@@ -103,3 +103,24 @@ def test_modes_without_a_scene_is_a_warning(cli, tmp_path):
     run = cli("check", BW, BW1, "--modes", tmp_path / "modes.toml")
     assert run.code == 0
     assert "modes.toml: not checked, the problem has no scene" in run.err
+
+
+def test_fluents_declared_for_costs_are_a_warning_not_a_refusal(cli, tmp_path):
+    domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
+    domain.write_text("(define (domain d)\n  (:requirements :typing :fluents)\n"
+                      "  (:types place) (:predicates (at ?x - place))\n"
+                      "  (:functions (total-cost) (length ?x ?y - place))\n"
+                      "  (:action go :parameters (?x ?y - place) :precondition (at ?x)\n"
+                      "    :effect (and (not (at ?x)) (at ?y)"
+                      " (increase (total-cost) (length ?x ?y)))))\n")
+    problem.write_text("(define (problem p) (:domain d) (:objects a b - place)\n"
+                       "  (:init (at a) (= (total-cost) 0) (= (length a a) 0) (= (length a b) 2)\n"
+                       "         (= (length b a) 2) (= (length b b) 0))\n"
+                       "  (:goal (at b)) (:metric minimize (total-cost)))\n")
+    run = cli("check", domain, problem, "--json")
+    assert run.code == 0, run.err
+    data = json.loads(run.out)
+    assert data["warnings"] == [f"{domain}:2:26: declares :fluents, which tampcli supports only "
+                                "as action costs; here the functions are only action costs, so "
+                                "they are read as such"]
+    assert data["domain"]["requirements"]["used"] == [":strips", ":action-costs", ":typing"]

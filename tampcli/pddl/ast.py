@@ -194,6 +194,7 @@ class Domain:
     axioms: tuple[Axiom, ...] = ()
     path: str | None = field(default=None, compare=False)
     span: Span = _span()
+    requirement_spans: tuple[Span, ...] = field(default=(), compare=False, repr=False)
 
     def action(self, name: str) -> Action | None:
         for action in self.actions:
@@ -234,3 +235,4 @@ class Problem:
     path: str | None = field(default=None, compare=False)
     span: Span = _span()
     domain_name_span: Span = _span()
+    requirement_spans: tuple[Span, ...] = field(default=(), compare=False, repr=False)

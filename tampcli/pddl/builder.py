@@ -118,7 +118,7 @@ class Builder(Transformer):
 
     @_paren
     def require_def(self, span, children):
-        return _Section(("requirements", tuple(str(t).lower() for t in children), span))
+        return _Section(("requirements", tuple(children), span))
 
     @_paren
     def types_def(self, span, children):
@@ -187,11 +187,13 @@ class Builder(Transformer):
     def domain(self, span, children):
         _define, name, *sections = children
         f = _sections(sections, repeatable=("actions", "axioms"))
+        keys = f.get("requirements", ())
         return ast.Domain(
-            str(name), tuple(f.get("requirements", ())), tuple(f.get("types", ())),
+            str(name), tuple(str(k) for k in keys), tuple(f.get("types", ())),
             tuple(f.get("constants", ())), tuple(f.get("predicates", ())),
             tuple(f.get("functions", ())), tuple(f.get("actions", ())),
-            tuple(f.get("axioms", ())), span=span)
+            tuple(f.get("axioms", ())), span=span,
+            requirement_spans=tuple(_tok_span(k) for k in keys))
 
     # ---- goal descriptions
 
@@ -336,14 +338,16 @@ class Builder(Transformer):
         _define, name, domain_name, *sections = children
         f = _sections(sections)
         init = f.get("init", ())
+        keys = f.get("requirements", ())
         return ast.Problem(
-            str(name), str(domain_name), tuple(f.get("requirements", ())),
+            str(name), str(domain_name), tuple(str(k) for k in keys),
             tuple(f.get("objects", ())),
             tuple(x for x in init if isinstance(x, ast.Atom)),
             tuple(x for x in init if isinstance(x, ast.FunctionValue)),
             f["goal"][0] if "goal" in f else ast.TRUE,
             f["metric"][0] if "metric" in f else None,
-            span=span, domain_name_span=_tok_span(domain_name))
+            span=span, domain_name_span=_tok_span(domain_name),
+            requirement_spans=tuple(_tok_span(k) for k in keys))
 
     def start(self, children):
         return children[0]

@@ -1,8 +1,11 @@
 """Semantic checks of a parsed domain (and problem): names, arities, types, scopes.
 
 `check` raises a PDDLSemanticError at the first mistake, pointing at the
-offending place in its file; what is suspicious but accepted (requirements
-used but not declared...) comes back as warnings, each `path:line:col: text`.
+offending place in its file, and an UnsupportedFeatureError at the first use
+of a requirement outside the accepted fragment (requirements.py says which
+are refused and which only warned about); what is suspicious but accepted
+(requirements used but not declared, or declared and ignored...) comes back
+as warnings, each `path:line:col: text`.
 """
 
 from __future__ import annotations
@@ -12,21 +15,24 @@ from bisect import bisect_right
 from dataclasses import dataclass
 from pathlib import Path
 
-from tampcli.errors import PDDLSemanticError
+from tampcli.errors import InputError, PDDLSemanticError, UnsupportedFeatureError
 from tampcli.pddl import ast
 from tampcli.pddl import requirements as reqs
+from tampcli.pddl.requirements import COST
 from tampcli.pddl.types import OBJECT, TypeHierarchy
-
-COST = "total-cost"
 
 
 def check(domain: ast.Domain, problem: ast.Problem | None = None) -> list[str]:
-    """Raise PDDLSemanticError on the first error; return warnings."""
+    """Raise an InputError on the first error; return warnings."""
+    report = reqs.report(domain, problem)
     dom = _DomainChecker(domain)
+    _refuse_unsupported(report, "domain", dom.src)
     dom.run()
     if problem is not None:
-        _ProblemChecker(dom, problem).run()
-    return _requirement_warnings(domain, problem)
+        checker = _ProblemChecker(dom, problem)
+        _refuse_unsupported(report, "problem", checker.src)
+        checker.run()
+    return _requirement_warnings(report, domain, problem)
 
 
 def requirements(domain: ast.Domain, problem: ast.Problem | None = None) -> reqs.RequirementReport:
@@ -34,13 +40,33 @@ def requirements(domain: ast.Domain, problem: ast.Problem | None = None) -> reqs
     return reqs.report(domain, problem)
 
 
-def _requirement_warnings(domain: ast.Domain, problem: ast.Problem | None) -> list[str]:
-    report = reqs.report(domain, problem)
-    warnings = [f"{_where(domain.path, domain.span)}: unknown requirement {r}"
-                for r in report.unknown]
+def _refuse_unsupported(report: reqs.RequirementReport, which: str, src: _Source) -> None:
+    # Only numeric fluents get this far: the other unsupported requirements
+    # have no place in the AST and were refused while parsing.
+    for requirement, span, where in report.unsupported:
+        if where == which:
+            raise src.error(f"{reqs.describe(requirement)} beyond action costs are not "
+                            f"supported: only ({COST}) can be increased or minimized "
+                            f"(requirement {requirement})", span, 0, UnsupportedFeatureError)
+
+
+def _requirement_warnings(report: reqs.RequirementReport, domain: ast.Domain,
+                          problem: ast.Problem | None) -> list[str]:
+    def where(span, which):
+        return _where(domain.path if which == "domain" else problem.path, span)
+
+    warnings = [f"{where(span, which)}: unknown requirement {r}"
+                for r, span, which in report.unknown]
+    for requirement, span, which in report.ignored:
+        if requirement in reqs.COST_ONLY and ":action-costs" in report.used:
+            text = (f"declares {requirement}, which tampcli supports only as action costs; "
+                    "here the functions are only action costs, so they are read as such")
+        else:
+            text = (f"declares {requirement} ({reqs.describe(requirement)}), which tampcli "
+                    "does not support; nothing uses it, so it is ignored")
+        warnings.append(f"{where(span, which)}: {text}")
     for requirement, span, which in report.missing:
-        path = domain.path if which == "domain" else problem.path
-        warnings.append(f"{_where(path, span)}: uses {reqs.describe(requirement)} "
+        warnings.append(f"{where(span, which)}: uses {reqs.describe(requirement)} "
                         f"without declaring {requirement}")
     return warnings
 
@@ -60,36 +86,41 @@ class _Source:
     def __init__(self, path: str | None):
         self.path = path
         self._lines: list[str] | None = None
+        self._text = ""
         self._starts: list[int] = []
 
     def lines(self) -> list[str]:
+        """The lines without their "\n" (the only line end the lexer counts)."""
         if self._lines is None:
             try:
-                text = Path(self.path).read_text() if self.path else ""
+                # Decoded as parser.read_file does: no newline translation, so
+                # offsets match the lexer's.
+                self._text = Path(self.path).read_bytes().decode("utf-8") if self.path else ""
             except (OSError, UnicodeDecodeError):
-                text = ""
-            self._lines = text.splitlines(keepends=True)
+                self._text = ""
+            self._lines = self._text.split("\n")
             pos = 0
             for line in self._lines:
                 self._starts.append(pos)
-                pos += len(line)
+                pos += len(line) + 1
         return self._lines
 
-    def error(self, message: str, span: ast.Span, item: int | None = None) -> PDDLSemanticError:
+    def error(self, message: str, span: ast.Span, item: int | None = None,
+              cls: type[InputError] = PDDLSemanticError) -> InputError:
         """An error at `span`, or at the `item`-th element inside the list `span` opens
         (0: its head, 1: its first argument...)."""
         line, column = span.line, span.column
         if item is not None:
             line, column = self._item(span, item)
         lines = self.lines()
-        source = lines[line - 1].rstrip("\n") if 0 < line <= len(lines) else None
-        return PDDLSemanticError(message, self.path, line or None, column or None, source)
+        source = lines[line - 1].removesuffix("\r") if 0 < line <= len(lines) else None
+        return cls(message, self.path, line or None, column or None, source)
 
     def _item(self, span: ast.Span, item: int) -> tuple[int, int]:
         lines = self.lines()
         if not 0 < span.line <= len(lines):
             return span.line, span.column
-        text = "".join(lines)
+        text = self._text
         start = self._starts[span.line - 1] + span.column - 1
         if text[start:start + 1] != "(":
             return span.line, span.column
@@ -282,11 +313,7 @@ class _DomainChecker:
             self._increase(effect, scope)
 
     def _increase(self, effect: ast.Increase, scope: _Scope) -> None:
-        target = effect.function
-        if target.name != COST:
-            raise self.src.error(f"only ({COST}) can be increased, not ({target.name}) "
-                                 "(requirement :numeric-fluents)", target.span, 0)
-        self.function_term(target, scope, self.constants, self.src)
+        self.function_term(effect.function, scope, self.constants, self.src)
         amount = effect.amount
         if isinstance(amount, ast.FunctionTerm):
             if amount.name == COST:
@@ -361,6 +388,10 @@ class _ProblemChecker:
                 raise self.src.error(f"negative action cost {value.value:g}", value.span, 2)
         dom.formula(p.goal, _Scope({}, "the goal"), objects, self.src)
         if p.metric is not None:
+            if p.metric.direction != "minimize":
+                raise self.src.error(f"only `(:metric minimize ({COST}))` is supported, not "
+                                     f"{p.metric.direction}", p.metric.span, 1,
+                                     UnsupportedFeatureError)
             dom.function_term(p.metric.expression, ground, objects, self.src)
 
 

@@ -164,8 +164,9 @@ def _syntax_error(err: UnexpectedInput, text: str, path: str | None) -> InputErr
     if isinstance(err, UnexpectedEOF) or (
         isinstance(err, UnexpectedToken) and err.token.type == "$END"
     ):
-        lines = text.splitlines() or [""]
-        line, column = len(lines), len(lines[-1]) + 1
+        # At the end of the last line, not on the empty one after a final newline.
+        lines = text.removesuffix("\n").split("\n")
+        line, column = len(lines), len(lines[-1].removesuffix("\r")) + 1
         expected = getattr(err, "expected", None) or getattr(err, "accepts", None) or ()
         return PDDLSyntaxError(
             "unexpected end of file (unbalanced parentheses?)", path, line, column,
@@ -209,22 +210,25 @@ def _misplaced_keyword(err: UnexpectedInput) -> tuple[int, int, str] | None:
     return None
 
 
-_REFUSED = {
-    ":durative-action": ("durative actions", ":durative-actions"),
-    ":constraints": ("constraints", ":constraints"),
-    "preference": ("preferences", ":preferences"),
-    ":timed-initial-literals": ("timed initial literals", ":timed-initial-literals"),
-}
-_REFUSED_RE = re.compile(r"\(\s*(" + "|".join(map(re.escape, _REFUSED)) + r")(?![\w-])|;[^\n]*",
-                         re.IGNORECASE)
+# Constructs outside the accepted fragment that the grammar has no place
+# for: each is recognised by how it opens. A number after `(at` can only be a
+# timed initial literal: names start with a letter.
+_REFUSED = (
+    (r":durative-action(?![\w-])", "durative actions", ":durative-actions"),
+    (r":constraints(?![\w-])", "constraints", ":constraints"),
+    (r"preference(?![\w-])", "preferences", ":preferences"),
+    (r"at\s+[-+]?\.?[0-9]", "timed initial literals", ":timed-initial-literals"),
+)
+_REFUSED_RE = re.compile(r"\(\s*(?:" + "|".join(f"({pattern})" for pattern, _, _ in _REFUSED)
+                         + r")|;[^\n]*", re.IGNORECASE)
 
 
 def _check_refused(text: str, path: str | None) -> None:
     """Refuse features outside the accepted fragment by name, before parsing."""
     for match in _REFUSED_RE.finditer(text):
-        if match.group(1) is None:  # a comment
+        if match.lastindex is None:  # a comment
             continue
-        feature, requirement = _REFUSED[match.group(1).lower()]
+        _, feature, requirement = _REFUSED[match.lastindex - 1]
         line = text.count("\n", 0, match.start()) + 1
         column = match.start() - (text.rfind("\n", 0, match.start()) + 1) + 1
         raise UnsupportedFeatureError(f"{feature} are not supported (requirement {requirement})",

@@ -2,7 +2,7 @@
 
 import pytest
 
-from tampcli.errors import PDDLSemanticError
+from tampcli.errors import PDDLSemanticError, UnsupportedFeatureError
 from tampcli.pddl import check, parser
 from tampcli.pddl.types import TypeHierarchy
 
@@ -56,9 +56,69 @@ def test_derived_and_costs_without_requirements_warn():
     assert "without declaring :action-costs" in text
 
 
-def test_unknown_requirement_warns():
+def test_unknown_requirement_warns_at_its_key():
     warnings = check.check(_domain("(:predicates (p))", ":strips :stirps"))
-    assert any("unknown requirement :stirps" in w for w in warnings)
+    assert warnings == ["<input>:1:43: unknown requirement :stirps"]
+
+
+# An IPC-2006-style domain: costs written as numeric fluents, before :action-costs.
+FLUENT_COSTS = """(:predicates (at ?x) (road ?x ?y))
+  (:functions (total-cost) (length ?x ?y) (unused))
+  (:action drive :parameters (?x ?y)
+    :precondition (and (at ?x) (road ?x ?y))
+    :effect (and (not (at ?x)) (at ?y) (increase (total-cost) (length ?x ?y))))"""
+
+
+@pytest.mark.parametrize("requirement", [":fluents", ":numeric-fluents"])
+def test_fluents_declared_for_action_costs_warn_once(requirement):
+    domain = _domain(FLUENT_COSTS, f":strips :negative-preconditions {requirement}")
+    warnings = check.check(domain)
+    assert warnings == [f"<input>:1:67: declares {requirement}, which tampcli supports "
+                        "only as action costs; here the functions are only action costs, so "
+                        "they are read as such"]
+    report = check.requirements(domain)
+    assert ":action-costs" in report.used and ":numeric-fluents" not in report.used
+
+
+def test_only_cost_functions_count_as_action_costs():
+    report = check.requirements(_domain(FLUENT_COSTS, ":negative-preconditions :action-costs"))
+    assert report.missing == () and ":action-costs" in report.used
+    problem = parser.parse_problem("(define (problem p) (:domain d) (:objects a b)\n"
+                                   " (:init (at a) (road a b) (= (unused) 4))\n (:goal (at b)))")
+    bare = _domain("(:predicates (at ?x) (road ?x ?y)) (:functions (unused))")
+    assert ":action-costs" not in check.requirements(bare, problem).used
+    assert check.check(bare, problem) == []
+
+
+def test_declared_but_unused_unsupported_requirements_warn_at_their_keys():
+    keys = (":durative-actions :duration-inequalities :continuous-effects :preferences "
+            ":constraints :timed-initial-literals :numeric-fluents :object-fluents")
+    domain = _domain("(:predicates (p)) (:action a :parameters () :effect (p))", keys)
+    warnings = check.check(domain)
+    assert len(warnings) == 8
+    assert warnings[0] == ("<input>:1:35: declares :durative-actions (durative actions), which "
+                           "tampcli does not support; nothing uses it, so it is ignored")
+    for requirement, warning in zip(keys.split(), warnings, strict=True):
+        assert f"declares {requirement} (" in warning
+    problem = parser.parse_problem("(define (problem p) (:domain d)\n"
+                                   "  (:requirements :preferences :adl) (:goal (p)))", "p.pddl")
+    assert check.check(_domain("(:predicates (p))"), problem) == [
+        "p.pddl:2:18: declares :preferences (preferences), which tampcli does not support; "
+        "nothing uses it, so it is ignored"]
+
+
+def test_increasing_another_function_is_a_use_of_numeric_fluents_and_refused(tmp_path):
+    path = tmp_path / "d.pddl"
+    path.write_text("(define (domain d) (:requirements :numeric-fluents)\n"
+                    "(:predicates (p)) (:functions (fuel))\n"
+                    "(:action a :parameters () :effect (and (p) (increase (fuel) 2))))\n")
+    domain = parser.parse_domain_file(path)
+    report = check.requirements(domain)
+    assert ":numeric-fluents" in report.used and ":action-costs" not in report.used
+    assert [(r, w) for r, _, w in report.unsupported] == [(":numeric-fluents", "domain")]
+    with pytest.raises(UnsupportedFeatureError, match="requirement :numeric-fluents") as err:
+        check.check(domain)
+    assert (err.value.line, err.value.column) == (3, 55)  # `fuel` in (increase (fuel) 2)
 
 
 def test_derived_predicate_may_follow_actions_and_be_used_in_them():

@@ -1,9 +1,10 @@
 """Property: mutated PDDL (tokens deleted, inserted, swapped) is either accepted, and
 then prints back to an equal tree, or refused with an InputError located inside
-the file. Never another exception."""
+the file, with that line as its source line. Never another exception."""
 
 import re
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -23,7 +24,11 @@ DOMAINS = {i + len(PAIRS): parser.parse_domain(TEXTS[i]) for i in range(len(PAIR
 TOKEN = re.compile(r"\(|\)|[^\s()]+")
 VOCABULARY = ["(", ")", "-", "?x", "?y", "and", "not", "or", "either", "forall", "when", "=",
               ":action", ":parameters", ":effect", ":types", ":init", ":goal", "object",
-              "increase", "(total-cost)", "1.5", "-2", "%", "total-cost", "define", "x"]
+              "increase", "(total-cost)", "1.5", "-2", "%", "total-cost", "define", "x",
+              # refused or warned-about constructs, so their errors get located too
+              "at", "10", "(at 10", ":requirements", ":fluents", ":durative-actions",
+              ":durative-action", "preference", ":constraints", ":metric", "maximize",
+              "decrease", "(fuel)", ":functions", "- number", "(= (fuel) 2)", "(> (fuel) 1)"]
 
 
 @st.composite
@@ -48,22 +53,28 @@ def mutants(draw):
     return index, text
 
 
+@pytest.fixture(scope="session")
+def mutant_file(tmp_path_factory):
+    # A real file: the semantic checks read their source lines from it.
+    return tmp_path_factory.mktemp("fuzz") / "mutant.pddl"
+
+
 @settings(max_examples=200, deadline=None, suppress_health_check=[HealthCheck.too_slow])
-@given(mutants())
-def test_mutants_fail_only_with_located_input_errors(mutant):
+@given(mutant=mutants())
+def test_mutants_fail_only_with_located_input_errors(mutant_file, mutant):
     index, text = mutant
+    mutant_file.write_text(text)
     try:
-        tree = parser.parse(text, "mutant.pddl")
+        tree = parser.parse(text, str(mutant_file))
         if isinstance(tree, parser.ast.Problem) and index in DOMAINS:
             check.check(DOMAINS[index], tree)
         elif isinstance(tree, parser.ast.Domain):
             check.check(tree)
     except InputError as err:
-        assert err.render()
-        if err.line is not None:
-            lines = text.split("\n")
-            assert 1 <= err.line <= len(lines)
-            assert err.column is not None
-            assert 1 <= err.column <= len(lines[err.line - 1]) + 1
+        lines = text.split("\n")
+        assert err.line is not None and 1 <= err.line <= len(lines), err.render()
+        assert err.column is not None and 1 <= err.column <= len(lines[err.line - 1]) + 1
+        assert err.source_line == lines[err.line - 1], err.render()
+        assert err.render().endswith("^")
         return
     assert parser.parse(printer.to_pddl(tree)) == tree

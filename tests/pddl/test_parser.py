@@ -4,7 +4,7 @@ import re
 
 import pytest
 
-from tampcli.errors import InputError, PDDLSyntaxError
+from tampcli.errors import InputError, PDDLSyntaxError, UnsupportedFeatureError
 from tampcli.pddl import ast, parser
 from tests.conftest import IPC
 
@@ -107,10 +107,26 @@ def test_missing_and_directory_files(tmp_path):
         parser.parse_domain_file(tmp_path)
 
 
-def test_empty_file_is_a_located_error():
+def test_empty_file_is_a_located_error_with_its_empty_line_and_a_caret():
     with pytest.raises(PDDLSyntaxError) as err:
         parser.parse("", "empty.pddl")
     assert err.value.line == 1 and err.value.column == 1
+    assert err.value.render().splitlines()[-2:] == ["  ", "  ^"]
+
+
+def test_source_lines_end_at_newlines_only():
+    # A form feed is whitespace to the lexer, not a line end.
+    with pytest.raises(PDDLSyntaxError) as err:
+        parser.parse("(define (domain d)\f(:predicates (p))\n  (:action %))")
+    assert (err.value.line, err.value.column) == (2, 12)
+    assert err.value.source_line == "  (:action %))"
+
+
+def test_timed_initial_literals_are_refused_by_name():
+    with pytest.raises(UnsupportedFeatureError, match="requirement :timed-initial-literals") as err:
+        parser.parse("(define (problem p) (:domain d)\n (:init (at t1 a)\n"
+                     "  (AT 2.5 (not (at t1 a))))\n (:goal (at t1 b)))")
+    assert (err.value.line, err.value.column) == (3, 3)
 
 
 def test_cached_tables_parse_like_fresh_ones(tmp_path):

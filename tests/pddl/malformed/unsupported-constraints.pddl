@@ -1,0 +1,5 @@
+(define (domain d)
+  (:requirements :constraints)
+  (:predicates (p))
+  (:constraints (always (p)))
+  (:action a :parameters () :effect (p)))

@@ -1,0 +1,5 @@
+(define (domain d)
+  (:requirements :object-fluents)
+  (:types place)
+  (:functions (location) - place)
+  (:action a :parameters () :effect (and)))

@@ -1,0 +1,6 @@
+(define (domain d)
+  (:requirements :preferences)
+  (:predicates (p) (q))
+  (:action a :parameters ()
+    :precondition (and (p) (preference soft (q)))
+    :effect (not (p))))
