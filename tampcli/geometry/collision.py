@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 import fcl
 import numpy as np
 
-from tampcli.geometry import obb, transforms
+from tampcli.geometry import obb, prism, transforms
 from tampcli.geometry.narrow import TOLERANCE, Placed, checked, fcl_distance, signed_distance
 from tampcli.geometry.parts import (
     Part,
@@ -197,12 +197,20 @@ class _Batch:
         p1 = np.zeros((k, 3))
         p2 = np.zeros((k, 3))
         raws, placed = [], []
+        closed = np.zeros(k, dtype=bool)  # answered exactly by prism.py
         samples = samples.tolist()
         for t, (s, (key_a, pa, pose_a), (key_b, pb_, pose_b)) in enumerate(
                 zip(samples, sides_a, sides_b, strict=True)):
             query = self.queries[s]
             a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
             placed.append((a, b))
+            if pa.shape.kind == "cylinder" or pb_.shape.kind == "cylinder":
+                exact = prism.distance(a, b)
+                if exact is not None:
+                    raws.append(exact)
+                    closed[t] = True
+                    dist[t], p1[t], p2[t], _ = exact
+                    continue
             raw = fcl_distance(request, a, pa.obj, b, pb_.obj)
             raws.append(raw)
             if raw is None:
@@ -211,15 +219,17 @@ class _Batch:
                 dist[t], p1[t], p2[t] = raw
         diff = p2 - p1
         norm = np.linalg.norm(diff, axis=1)
-        quick = (dist > TOLERANCE) & (norm > 1e-12) & geom_a[2] & geom_b[2]
+        quick = (dist > TOLERANCE) & (norm > 1e-12) & geom_a[2] & geom_b[2] & ~closed
         normal = np.divide(diff, norm[:, None], out=np.zeros_like(diff),
                            where=norm[:, None] > 1e-12)
+        for t in np.nonzero(closed)[0].tolist():
+            normal[t] = raws[t][3]
         if quick.any():
             u = normal[quick][:, None, :]
             gap = obb.reach(geom_a[0][quick], geom_a[1][quick], u)[:, 0] + obb.reach(
                 geom_b[0][quick], geom_b[1][quick], -u)[:, 0]
             quick[quick] = dist[quick] + gap <= TOLERANCE
-        for t in np.nonzero(~quick)[0].tolist():
+        for t in np.nonzero(~quick & ~closed)[0].tolist():
             dist[t], p1[t], p2[t], normal[t] = checked(raws[t], *placed[t])
         within = dist <= self.activation
         if not within.any():

@@ -26,6 +26,7 @@ import math
 import fcl
 import numpy as np
 
+from tampcli.geometry import prism
 from tampcli.geometry.gjk import gjk_distance
 from tampcli.geometry.shapes import Shape
 
@@ -88,6 +89,10 @@ def signed_distance(request, a: Placed, oa, b: Placed, ob):
     `oa`, `ob` are the FCL objects of the two shapes; they are moved to the
     placed poses here.
     """
+    if a.shape.kind == "cylinder" or b.shape.kind == "cylinder":
+        exact = prism.distance(a, b)
+        if exact is not None:
+            return exact
     raw = fcl_distance(request, a, oa, b, ob)
     if raw is not None:
         d, p1, p2 = raw

@@ -175,7 +175,37 @@ def keyframe_guess(problem: TrajectoryProblem, placements: dict, start, rng,
             q = T[:2, 3].copy() if planar else best_of([(T, None)])[0]
             vals[f"k{k}"] = np.clip(q, world.lower, world.upper)
             q_prev = vals[f"k{k}"]
+    if not planar:
+        _hover_before_next(problem, vals, rng)
     return vals, choices
+
+
+def _hover_before_next(problem: TrajectoryProblem, vals: dict, rng) -> None:
+    """Re-seed each move that leads into another keyframe from that keyframe, backwards.
+
+    A move's keyframe only asks the hand to be above its target, so its best
+    guess is the next action's configuration lifted clear: the forward guess
+    (the previous hand pose slid over the target) can sit in another IK branch
+    than the grasp or place that follows, and the keyframe NLP then stays in a
+    local optimum several times the cost (measured on arm-kitchen: 1.28 vs 0.41).
+    """
+    world = problem.world
+    keyframe_step = {k: step for step in problem.steps for k in step.keyframes}
+    for k in range(problem.n_keyframes - 2, -1, -1):
+        step = keyframe_step.get(k)
+        if step is None or step.kind != "move" or step.target is None:
+            continue
+        q_next = vals.get(f"k{k + 1}")
+        if q_next is None:
+            continue
+        t = world.tool_pose(q_next).copy()
+        lo, hi = target_rect(problem, step.target)
+        t[:2, 3] = np.clip(t[:2, 3], lo, hi)
+        held_h = 2 * problem.bodies[step.held_before].half[2] if step.held_before else 0.0
+        t[2, 3] = max(t[2, 3], _top_under(problem, step.target) + held_h) + MOVE_HOVER
+        q, res = world.ik(t, seed=q_next, rng_seed=int(rng.integers(1 << 30)))
+        if res < IK_TOLERANCE:
+            vals[f"k{k}"] = np.clip(q, world.lower, world.upper)
 
 
 def target_rect(problem, target):

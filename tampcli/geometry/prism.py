@@ -1,0 +1,134 @@
+"""Exact signed distance between upright prisms: boxes and cylinders whose axis is vertical.
+
+An upright prism is a Cartesian product: a 2D base (a rectangle or a disk) in
+x, y times a height interval in z. For two products the squared distance is
+the sum of the squared distances of the factors, and the penetration depth
+(least translation that separates them) is the smaller of the factors'
+depths. So the 3D query reduces to a rectangle/disk query in the plane and
+an interval query, both closed form.
+
+This is the common case of the planar robot (a vertical cylinder) and of
+blocks on tables, where FCL's cylinder answers are centimetres off (fcl#508)
+and the iterative GJK that would otherwise certify them costs a millisecond
+in Python.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+UPRIGHT = 1e-9  # |1 - R_zz| under which a solid's z axis counts as vertical
+
+
+def base(placed):
+    """(kind, centre (2,), x axis (2,), half extents or radius, z low, z high), or None."""
+    kind = placed.shape.kind
+    if kind not in ("box", "cylinder"):
+        return None
+    rot, pos = placed.rot, placed.pos
+    if abs(abs(rot[2, 2]) - 1.0) > UPRIGHT:
+        return None
+    if kind == "box":
+        hx, hy, hz = (0.5 * s for s in placed.shape.size)
+        axis = rot[:2, 0] / max(math.hypot(rot[0, 0], rot[1, 0]), 1e-300)
+        return "box", pos[:2], axis, (hx, hy), pos[2] - hz, pos[2] + hz
+    r, h = placed.shape.size
+    return "disk", pos[:2], None, r, pos[2] - 0.5 * h, pos[2] + 0.5 * h
+
+
+def distance(a, b):
+    """(distance, point on a, point on b, unit normal from a to b), or None when either
+    solid is not an upright prism, or both are rectangles (a polytope pair FCL answers
+    and the projection check certifies)."""
+    fa, fb = base(a), base(b)
+    if fa is None or fb is None or (fa[0] == "box" and fb[0] == "box"):
+        return None
+    # The planar factor, as (signed distance, point on a, point on b, unit normal a -> b).
+    if fa[0] == "disk" and fb[0] == "disk":
+        planar = _disks(fa, fb)
+    elif fa[0] == "disk":
+        planar = _disk_box(fa, fb)
+    else:
+        d, pb, pa, n, common = _disk_box(fb, fa)
+        planar = (d, pa, pb, (-n[0], -n[1]), common)
+    d_xy, pa_xy, pb_xy, n_xy, common = planar
+    # The vertical factor: the gap between the height intervals (negative: overlap).
+    below = fb[4] - fa[5]  # b above a
+    above = fa[4] - fb[5]  # b below a
+    if below >= above:
+        d_z, za, zb, n_z = below, fa[5], fb[4], 1.0
+    else:
+        d_z, za, zb, n_z = above, fa[4], fb[5], -1.0
+    if d_xy > 0 and d_z > 0:
+        dist = math.hypot(d_xy, d_z)
+        pa = np.array([pa_xy[0], pa_xy[1], za])
+        pb = np.array([pb_xy[0], pb_xy[1], zb])
+        return dist, pa, pb, (pb - pa) / dist
+    if d_xy >= d_z:
+        # Separated (or least deep) in the plane: witnesses at a common height.
+        z = _shared_height(fa, fb)
+        pa = np.array([pa_xy[0], pa_xy[1], z])
+        pb = np.array([pb_xy[0], pb_xy[1], z])
+        return d_xy, pa, pb, np.array([n_xy[0], n_xy[1], 0.0])
+    # Separated (or least deep) in height: the bases overlap; witnesses above a
+    # point of both.
+    x, y = common
+    return d_z, np.array([x, y, za]), np.array([x, y, zb]), np.array([0.0, 0.0, n_z])
+
+
+def _shared_height(fa, fb) -> float:
+    lo, hi = max(fa[4], fb[4]), min(fa[5], fb[5])
+    return 0.5 * (lo + hi)
+
+
+def _disks(fa, fb):
+    ca, ra = fa[1], fa[3]
+    cb, rb = fb[1], fb[3]
+    dx, dy = cb[0] - ca[0], cb[1] - ca[1]
+    norm = math.hypot(dx, dy)
+    n = (dx / norm, dy / norm) if norm > 1e-12 else (1.0, 0.0)
+    pa = (ca[0] + ra * n[0], ca[1] + ra * n[1])
+    pb = (cb[0] - rb * n[0], cb[1] - rb * n[1])
+    # Along the centre line, the middle of the stretch both disks cover.
+    t = 0.5 * (max(-ra, norm - rb) + min(ra, norm + rb))
+    return norm - ra - rb, pa, pb, n, (ca[0] + t * n[0], ca[1] + t * n[1])
+
+
+def _disk_box(disk, box):
+    """Disk a vs rectangle b in the plane: (signed distance, point on a, point on b,
+    normal a -> b, a point of both when they overlap)."""
+    c, r = disk[1], disk[3]
+    centre, (ux, uy), (hx, hy) = box[1], box[2], box[3]
+    # The disk centre in the rectangle's frame.
+    rx, ry = c[0] - centre[0], c[1] - centre[1]
+    px, py = ux * rx + uy * ry, -uy * rx + ux * ry
+    qx, qy = min(max(px, -hx), hx), min(max(py, -hy), hy)
+    outside = (qx, qy) != (px, py)
+    if outside:
+        gx, gy = px - qx, py - qy
+        gap = math.hypot(gx, gy)
+        nx, ny = -gx / gap, -gy / gap  # from the disk towards the rectangle
+        d = gap - r
+    else:
+        # Centre inside: leave through the nearest side.
+        if hx - abs(px) <= hy - abs(py):
+            side = 1.0 if px >= 0 else -1.0
+            qx, qy = side * hx, py
+            nx, ny = -side, 0.0
+            inside = hx - abs(px)
+        else:
+            side = 1.0 if py >= 0 else -1.0
+            qx, qy = px, side * hy
+            nx, ny = 0.0, -side
+            inside = hy - abs(py)
+        d = -inside - r
+    # Back to the world: the point on the rectangle and the normal.
+    wx, wy = centre[0] + ux * qx - uy * qy, centre[1] + uy * qx + ux * qy
+    n = (ux * nx - uy * ny, uy * nx + ux * ny)
+    pa = (c[0] + r * n[0], c[1] + r * n[1])
+    # Overlapping: the rectangle's point nearest the centre is in the disk, and the
+    # centre itself when it is inside the rectangle.
+    common = (wx, wy) if outside else (c[0], c[1])
+    return d, pa, (wx, wy), n, common
