@@ -1,6 +1,9 @@
 """`tampcli check`: tables, JSON, warnings, the grounding and scene parts."""
 
 import json
+import shutil
+
+import pybullet_data
 
 from tests.conftest import IPC, ROOT
 
@@ -124,3 +127,61 @@ def test_fluents_declared_for_costs_are_a_warning_not_a_refusal(cli, tmp_path):
                                 "as action costs; here the functions are only action costs, so "
                                 "they are read as such"]
     assert data["domain"]["requirements"]["used"] == [":strips", ":action-costs", ":typing"]
+
+
+GEO = ROOT / "tests" / "geometry" / "data"
+
+
+def _has_row(out: str, *cells: str) -> bool:
+    """Whether a table line of `out` starts with these cells, in this order."""
+    return any([c.strip() for c in line.strip("│┃").split("│")][:len(cells)] == list(cells)
+               for line in out.splitlines())
+
+
+def test_scene_tables_show_joints_bodies_and_regions(cli):
+    run = cli("check", GEO / "domain.pddl", GEO / "p01.pddl")
+    assert run.code == 0, run.err
+
+    def row(*cells):
+        assert _has_row(run.out, *cells), f"no row {cells} in:\n{run.out}"
+
+    row("panda_joint4", "-3.142", "0.000", "-2.356")
+    row("panda_joint6", "-0.087", "3.822", "1.571")
+    row("table", "box 1.2x1.4x0.04", "0.3 0 -0.02", "-", "yes")
+    row("a", "box 0.05x0.05x0.05", "0.45 -0.2 0.025", "yaw 17.2°", "no")
+    row("b", "cylinder r 0.03 h 0.08", "0.5 0.1 0.04", "-", "no")
+    row("wall", "box 0.02x0.3x0.3", "0.75 0 0.15", "-", "obstacle")
+    row("goal", "table", "0.45 0.25", "0.15x0.15")
+    row("self-collision pairs", "39 link pairs checked (see --json)")
+    row("robot stands on", "table")
+    row("link:panda_link5", "link:panda_link7", "22.1")
+
+
+def test_scene_json_lists_the_self_collision_pairs(cli):
+    run = cli("check", GEO / "domain.pddl", GEO / "p01.pddl", "--json")
+    assert run.code == 0, run.err
+    scene = json.loads(run.out)["scene"]
+    pairs = scene["self_collision_pairs"]
+    assert len(pairs) == 39 and ["link:panda_link1", "link:panda_hand"] in pairs
+    assert ["link:panda_link1", "link:panda_link2"] not in pairs  # adjacent links
+    robot = scene["robot"]
+    assert robot["joints"][3] == "panda_joint4"
+    # pybullet_data's Panda URDF: joint 4 in [-3.1416, 0]
+    assert (robot["lower"][3], robot["upper"][3], robot["start"][3]) == (-3.1416, 0.0, -2.356)
+
+
+def test_scene_table_shows_mesh_files_and_scale(cli, tmp_path):
+    for name in ("domain.pddl", "p01.pddl", "modes.toml"):
+        shutil.copy(GEO / name, tmp_path / name)
+    duck = f"{pybullet_data.getDataPath()}/duck_vhacd.obj"
+    (tmp_path / "p01.scene.toml").write_text(
+        (GEO / "p01.scene.toml").read_text()
+        + f'\n[[objects]]\nname = "duck"\nshape = "mesh"\nmesh = "{duck}"\nscale = 0.1\n'
+        "pose = [0.0, 0.55, 0.3, 1.5708, 0.0, 0.0]\nfixed = true\n")
+    run = cli("check", tmp_path / "domain.pddl", tmp_path / "p01.pddl")
+    assert run.code == 0, run.err
+    assert _has_row(run.out, "duck", "mesh duck_vhacd.obj x 0.1", "0 0.55 0.3",
+                    "rpy 90.0 0.0 0.0°", "obstacle"), run.out
+    body = json.loads(cli("check", tmp_path / "domain.pddl", tmp_path / "p01.pddl",
+                          "--json").out)["scene"]["bodies"][-1]
+    assert (body["file"], body["scale"]) == (duck, [0.1, 0.1, 0.1])

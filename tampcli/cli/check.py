@@ -7,6 +7,7 @@ grounding is available, and the scene when the problem has one.
 
 from __future__ import annotations
 
+import math
 import time
 from collections import Counter
 from pathlib import Path
@@ -191,7 +192,8 @@ def _print_tables(ui, summary: dict) -> None:
         ui.print(table)
     scene = summary.get("scene")
     if scene:
-        ui.print(_scene_table(scene))
+        for table in _scene_tables(scene):
+            ui.print(table)
 
 
 def _listing(title: str, rows: dict[str, str]) -> Table:
@@ -205,7 +207,8 @@ def _listing(title: str, rows: dict[str, str]) -> Table:
     return table
 
 
-def _scene_table(scene: dict) -> Table:
+def _scene_tables(scene: dict) -> list[Table]:
+    """The scene as tables: an overview, then joints, bodies, regions, start-state pairs."""
     table = Table(title=f"scene {scene.get('scene', '')}", show_header=False,
                   title_justify="left")
     table.add_column(style="bold")
@@ -214,23 +217,125 @@ def _scene_table(scene: dict) -> Table:
     if robot:
         table.add_row("robot", f"{robot.get('model')} ({len(robot.get('joints', []))} joints, "
                                f"tool {robot.get('tool_link')})")
-    bodies = scene.get("bodies", [])
-    if bodies:
-        table.add_row("bodies", ", ".join(b["name"] + ("" if b.get("fixed") else "*")
-                                          for b in bodies) + "   (* movable)")
-    regions = scene.get("regions", [])
-    if regions:
-        table.add_row("regions", ", ".join(r["name"] for r in regions))
+        table.add_row("base", _xyz(robot.get("base", ())))
+    if scene.get("modes"):
+        table.add_row("modes", str(scene["modes"]))
+    if "support" in scene:
+        table.add_row("robot stands on", ", ".join(scene["support"]) or "-")
+    if "self_collision_pairs" in scene:
+        table.add_row("self-collision pairs",
+                      f"{len(scene['self_collision_pairs'])} link pairs checked (see --json)")
     modes = scene.get("action_modes", {})
     if modes:
         table.add_row("action modes", ", ".join(f"{a}: {m}" for a, m in modes.items()))
     contacts = scene.get("start_contacts", [])
-    table.add_row("start state", "no close pairs" if not contacts else
-                  "; ".join(f"{c['a']} / {c['b']}: {c['distance']:.4f} m" for c in contacts[:5]))
-    for key in sorted(set(scene) - {"scene", "robot", "bodies", "regions", "action_modes",
-                                    "start_contacts", "warnings"}):
+    close, within = len(contacts), f"{scene.get('start_contacts_within', 0.05) * 100:g} cm"
+    table.add_row("start state", f"{close} pair{'s' * (close != 1)} closer than {within}, no "
+                  "overlap" if close else f"no pairs closer than {within}")
+    shown = {"scene", "robot", "modes", "support", "self_collision_pairs", "bodies", "regions",
+             "action_modes", "start_contacts", "start_contacts_within", "warnings"}
+    for key in sorted(set(scene) - shown):
         table.add_row(key, str(scene[key]))
+    tables = [table]
+    if robot.get("joints"):
+        tables.append(_joints_table(robot))
+    if scene.get("bodies"):
+        tables.append(_bodies_table(scene["bodies"]))
+    if scene.get("regions"):
+        tables.append(_regions_table(scene["regions"]))
+    if contacts:
+        tables.append(_contacts_table(contacts))
+    return tables
+
+
+def _joints_table(robot: dict) -> Table:
+    names = robot["joints"]
+    table = Table(title=f"joints ({len(names)}; rad, or m for prismatic)", title_justify="left")
+    table.add_column("joint")
+    for column in ("lower", "upper", "start"):
+        table.add_column(column, justify="right")
+    for name, lo, hi, q in zip(names, robot["lower"], robot["upper"], robot["start"],
+                               strict=True):
+        table.add_row(name, f"{lo:.3f}", f"{hi:.3f}", f"{q:.3f}")
     return table
+
+
+def _bodies_table(bodies: list[dict]) -> Table:
+    table = Table(title=f"bodies ({len(bodies)}; m; an obstacle is fixed and not in the problem)",
+                  title_justify="left")
+    rotated = any(_rotation(b["pose"][3:7]) != "-" for b in bodies)
+    columns = ["name", "shape, size", "position"] + ["rotation"] * rotated + ["fixed"]
+    for column in columns:
+        # Nothing is cut on a narrow terminal: numbers stay on one line, names fold.
+        table.add_column(column, no_wrap=column in ("shape, size", "position"), overflow="fold")
+    for b in bodies[:TABLE_ROWS]:
+        fixed = ("obstacle" if b.get("obstacle") else "yes") if b["fixed"] else "no"
+        rotation = [_rotation(b["pose"][3:7])] * rotated
+        table.add_row(b["name"], f"{b['shape']} {_size(b)}", _xyz(b["pose"][:3]), *rotation,
+                      fixed)
+    if len(bodies) > TABLE_ROWS:
+        table.add_row(f"... {len(bodies) - TABLE_ROWS} more (see --json)",
+                      *[""] * (len(columns) - 1))
+    return table
+
+
+def _regions_table(regions: list[dict]) -> Table:
+    table = Table(title=f"regions ({len(regions)}; m)", title_justify="left")
+    for column in ("name", "on", "centre", "size"):
+        table.add_column(column)
+    for r in regions[:TABLE_ROWS]:
+        table.add_row(r["name"], r["on"], _xyz(r["center"]),
+                      "x".join(_mm(v) for v in r["size"]))
+    if len(regions) > TABLE_ROWS:
+        table.add_row(f"... {len(regions) - TABLE_ROWS} more (see --json)", "", "", "")
+    return table
+
+
+def _contacts_table(contacts: list[dict], rows: int = 10) -> Table:
+    table = Table(title="start state: closest pairs", title_justify="left")
+    table.add_column("a")
+    table.add_column("b")
+    table.add_column("distance (mm)", justify="right")
+    for c in contacts[:rows]:
+        table.add_row(c["a"], c["b"], f"{c['distance'] * 1000:.1f}")
+    if len(contacts) > rows:
+        table.add_row(f"... {len(contacts) - rows} more (see --json)", "", "")
+    return table
+
+
+def _size(body: dict) -> str:
+    size = body.get("size") or []
+    if body["shape"] == "box":
+        return "x".join(_mm(v) for v in size)
+    if body["shape"] == "cylinder":
+        return f"r {_mm(size[0])} h {_mm(size[1])}"
+    if body["shape"] == "sphere":
+        return f"r {_mm(size[0])}"
+    scale = body.get("scale") or [1.0]
+    factor = f"{scale[0]:g}" if len(set(scale)) == 1 else " ".join(f"{v:g}" for v in scale)
+    return f"{Path(body.get('file') or '?').name} x {factor}"
+
+
+def _xyz(values) -> str:
+    return " ".join(_mm(v) for v in values)
+
+
+def _mm(value: float) -> str:
+    """Metres to the millimetre, without trailing zeros (and without "-0")."""
+    return f"{round(value, 3) + 0.0:g}"
+
+
+def _rotation(quat: list[float]) -> str:
+    """A quaternion (x, y, z, w) as yaw, or roll pitch yaw, in degrees; "-" when identity."""
+    qx, qy, qz, qw = quat
+    roll = math.degrees(math.atan2(2 * (qw * qx + qy * qz), 1 - 2 * (qx * qx + qy * qy)))
+    pitch = math.degrees(math.asin(max(-1.0, min(1.0, 2 * (qw * qy - qz * qx)))))
+    yaw = math.degrees(math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz)))
+    if abs(roll) >= 0.05 or abs(pitch) >= 0.05:
+        return f"rpy {roll:.1f} {pitch:.1f} {yaw:.1f}°"
+    if abs(yaw) >= 0.05:
+        return f"yaw {yaw:.1f}°"
+    return "-"
 
 
 def _types_text(types: dict[str, list[str]]) -> str:

@@ -12,7 +12,9 @@ from dataclasses import dataclass
 import fcl
 import numpy as np
 
+from tampcli.errors import SceneError
 from tampcli.geometry import obb, transforms
+from tampcli.geometry.scene_check import body_error, entry_error
 from tampcli.geometry.shapes import Shape, fcl_transform, mesh_hulls, primitive
 from tampcli.geometry.shapes import pybullet_link_shapes as link_shapes
 
@@ -47,17 +49,38 @@ def fcl_object(shape: Shape) -> fcl.CollisionObject:
 def robot_parts(world) -> list[Part]:
     parts = []
     for i, link in enumerate(world.chain.links):
-        for shape in link_shapes(world.pb, world.client, world.robot_id, link.pb_index):
+        try:
+            shapes = link_shapes(world.pb, world.client, world.robot_id, link.pb_index)
+        except SceneError as e:  # a collision mesh of the robot's URDF without volume
+            if e.path == world.scene.path:
+                raise
+            key = "urdf" if world.scene.robot.urdf else "model"
+            raise entry_error(world.scene, f"link {link.name!r}: {e.location()}: {e.message}",
+                              "robot", 0, key) from None
+        for shape in shapes:
             parts.append(Part(f"link:{link.name}", shape, fcl_object(shape), i))
     return parts
 
 
 def body_shapes(world, body) -> list[Shape]:
-    """Shapes of a scene body in its own frame (primitives exact, meshes as hulls)."""
+    """Shapes of a scene body in its own frame (primitives exact, meshes as hulls).
+
+    A mesh that cannot become hulls (no volume, unreadable) is a SceneError
+    at the body's `mesh` or `urdf` key of the scene file.
+    """
     if body.shape in ("box", "cylinder", "sphere"):
         return [primitive(body.shape, body.size)]
-    if body.shape == "mesh":
-        return mesh_hulls(body.mesh, body.scale)
+    try:
+        if body.shape == "mesh":
+            return mesh_hulls(body.mesh, body.scale)
+        return _urdf_shapes(world, body)
+    except SceneError as e:
+        if e.path == world.scene.path:
+            raise
+        raise body_error(world.scene, body, body.shape, f"{e.location()}: {e.message}") from None
+
+
+def _urdf_shapes(world, body) -> list[Shape]:
     pb, client, uid = world.pb, world.client, world.pb_body(body.name)
     base_inv = transforms.pose_inverse(body.matrix)
     shapes = []

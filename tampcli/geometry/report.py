@@ -1,9 +1,9 @@
 """What `tampcli check` says about a problem's geometry: `scene_summary`.
 
 Loading refuses a bad scene (a SceneError, exit 2). A good one is
-summarized: robot and joint limits, bodies, regions, modes, the closest
-pairs of the start state, and warnings (goal regions the robot cannot
-reach, actions without a mode).
+summarized: robot and joint limits, bodies, regions, modes, the robot's
+support and self-collision pairs, the closest pairs of the start state, and
+warnings (goal regions the robot cannot reach, actions without a mode).
 """
 
 from __future__ import annotations
@@ -53,7 +53,8 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, domain_path, problem
             "start": _round(world.start),
         }
         support = sorted(checker.support)
-        self_pairs = len(checker.self_pairs)
+        # Pairs of link parts: a link with several convex parts would repeat a name pair.
+        self_pairs = [list(pair) for pair in dict.fromkeys(checker.self_pair_names)]
     if modes is None:
         warnings.append("no modes.toml beside the domain: every action is symbolic only")
     else:
@@ -66,16 +67,25 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, domain_path, problem
         "robot": robot,
         "support": support,
         "self_collision_pairs": self_pairs,
-        "bodies": [{"name": b.name, "shape": b.shape, "size": list(b.size),
-                    "pose": _round(b.pose), "fixed": b.fixed, "obstacle": b.obstacle}
-                   for b in scene.bodies],
+        "bodies": [_body(b) for b in scene.bodies],
         "regions": [{"name": r.name, "on": r.on, "center": list(r.center),
                      "size": list(r.size)} for r in scene.regions],
         "action_modes": {name: mode.kind for name, mode in (modes.items() if modes else ())},
         "start_contacts": [{"a": c.a, "b": c.b, "distance": round(c.distance, 5)}
                            for c in contacts],
+        "start_contacts_within": REPORT_DISTANCE,
         "warnings": warnings,
     }
+
+
+def _body(body) -> dict:
+    """A body as `check --json` shows it: pose as [x, y, z, qx, qy, qz, qw]."""
+    out = {"name": body.name, "shape": body.shape, "size": list(body.size),
+           "pose": _round(body.pose), "fixed": body.fixed, "obstacle": body.obstacle}
+    if body.shape in ("mesh", "urdf"):
+        out["file"] = body.mesh or body.urdf
+        out["scale"] = list(body.scale)
+    return out
 
 
 def _round(values, digits: int = 6) -> list[float]:

@@ -6,7 +6,7 @@ import dataclasses
 
 from tampcli.errors import SceneError, source_line_at
 from tampcli.geometry.model import Body, Scene
-from tampcli.geometry.tomlsrc import TomlSource
+from tampcli.geometry.tomlsrc import TomlSource, read_toml
 from tampcli.pddl import ast
 
 
@@ -73,6 +73,35 @@ def check_modes_against_scene(src: TomlSource | None, scene: Scene, modes, domai
                 raise SceneError(message, path=scene.path, line=line or 1, key="objects",
                                  source_line=source_line_at(src.text, line or 1)
                                  if src is not None else None)
+
+
+def entry_error(scene: Scene, message: str, table: str, index: int = 0,
+                key: str | None = None) -> SceneError:
+    """A SceneError at `key` of the `index`-th `[table]` entry of the scene's file.
+
+    For problems found after parsing (PyBullet refusing a file, a mesh
+    without volume): the file is read again for the key's line. A scene
+    built in code (no file) is located at the entry's recorded line.
+    """
+    name = f"{table}.{key}" if key else table
+    if scene.path is not None:
+        try:
+            src = read_toml(scene.path)
+        except SceneError:
+            src = None
+        if src is not None:
+            return src.error(message, table, index, key, name)
+    entry = scene.robot if table == "robot" else getattr(scene, _TABLES[table])[index]
+    return SceneError(message, path=scene.path, line=entry.line, key=name)
+
+
+_TABLES = {"objects": "bodies", "regions": "regions"}
+
+
+def body_error(scene: Scene, body: Body, key: str, message: str) -> SceneError:
+    """`entry_error` for a body's key, its entry found by name."""
+    index = next(i for i, b in enumerate(scene.bodies) if b.name == body.name)
+    return entry_error(scene, f"object {body.name!r}: {message}", "objects", index, key)
 
 
 def _type_parents(domain) -> dict[str, tuple[str, ...]]:

@@ -3,6 +3,13 @@
 Resting contact is not overlap: bodies may interpenetrate by up to
 OVERLAP_TOLERANCE (a few mm of modelling slack), and the robot's base may
 touch the body it stands on.
+
+Deliberately not checked: two obstacles (fixed bodies the PDDL problem does
+not name). A fixed scene is often built from touching or overlapping parts
+(a table top and its legs, a shelf and its boards); they never move, so no
+query of the planner depends on their overlap. A movable body, and a fixed
+body the problem names (a surface things are placed on), are checked
+against every other body. See docs/scene.md.
 """
 
 from __future__ import annotations
@@ -21,8 +28,7 @@ def start_problems(world, checker) -> list[tuple[str, str, str]]:
     for i, a in enumerate(bodies):
         for b in bodies[i + 1:]:
             if a.fixed and b.fixed and a.obstacle and b.obstacle:
-                # Two obstacles may be modelled as one solid built from parts.
-                continue
+                continue  # one solid built from parts (see the module docstring)
             c = checker.body_distance(a.name, a.matrix, b.name, b.matrix)
             if c.distance < -OVERLAP_TOLERANCE:
                 problems.append(("objects.pose", b.name, f"{b.name!r} overlaps {a.name!r} by "

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
+from xml.etree import ElementTree
 
 import numpy as np
 import pybullet
@@ -20,6 +21,8 @@ from tampcli.geometry import transforms
 from tampcli.geometry.chain import REVOLUTE, Chain, measure_chain
 from tampcli.geometry.ik import solve_ik
 from tampcli.geometry.scene import PANDA_READY, Body, Scene
+from tampcli.geometry.scene_check import body_error, entry_error
+from tampcli.geometry.shapes import mesh_hulls
 
 PANDA_URDF = "franka_panda/panda.urdf"
 PANDA_JOINTS = tuple(f"panda_joint{i}" for i in range(1, 8))
@@ -80,7 +83,8 @@ class World:
         pb, c = self.pb, self.client
         pos, orn = body.pose[:3], body.pose[3:]
         if body.shape == "urdf":
-            uid = self._load_urdf(body.urdf, pos, orn, body.scale[0], "objects.urdf", body.line)
+            uid = self._load_urdf(body.urdf, pos, orn, body.scale[0],
+                                  lambda message: body_error(self.scene, body, "urdf", message))
             pb.changeVisualShape(uid, -1, rgbaColor=body.color, physicsClientId=c)
             return uid
         if body.shape == "box":
@@ -98,23 +102,49 @@ class World:
             vis = pb.createVisualShape(pb.GEOM_SPHERE, radius=body.size[0],
                                        rgbaColor=body.color, physicsClientId=c)
         else:
+            col, vis = self._load_mesh(body)
+        return pb.createMultiBody(0.0, col, vis, pos, orn, physicsClientId=c)
+
+    def _load_mesh(self, body: Body) -> tuple[int, int]:
+        """Collision and visual shapes of a mesh body; a file either reader refuses is a
+        SceneError at the body's `mesh` key.
+
+        The file is read (and its hulls built, cached for the collision checker)
+        before PyBullet sees it: that names what is wrong, where PyBullet only
+        says that it failed.
+        """
+        pb, c = self.pb, self.client
+        try:
+            mesh_hulls(body.mesh, body.scale)
+        except SceneError as e:
+            raise body_error(self.scene, body, "mesh", f"{e.location()}: {e.message}") from None
+        try:
             col = pb.createCollisionShape(pb.GEOM_MESH, fileName=body.mesh,
                                           meshScale=list(body.scale), physicsClientId=c)
-            if col < 0:
-                raise SceneError(f"PyBullet cannot read the mesh {body.mesh}",
-                                 path=self.scene.path, line=body.line, key="objects.mesh")
             vis = pb.createVisualShape(pb.GEOM_MESH, fileName=body.mesh,
                                        meshScale=list(body.scale), rgbaColor=body.color,
                                        physicsClientId=c)
-        return pb.createMultiBody(0.0, col, vis, pos, orn, physicsClientId=c)
+        except pb.error:
+            col = -1
+        if col < 0:
+            hint = " (an OBJ file needs `v` and `f` lines)" if body.mesh.lower().endswith(
+                ".obj") else ""
+            raise body_error(self.scene, body, "mesh",
+                             f"PyBullet cannot read the mesh {body.mesh}{hint}")
+        return col, vis
 
-    def _load_urdf(self, path, pos, orn, scale: float, key: str, line) -> int:
+    def _load_urdf(self, path, pos, orn, scale: float, error) -> int:
+        """loadURDF; `error(message)` makes the located SceneError for a file it refuses."""
+        problem = urdf_problem(path)
+        if problem:
+            raise error(problem)
         try:
             return self.pb.loadURDF(path, pos, orn, useFixedBase=True, globalScaling=scale,
                                     physicsClientId=self.client)
         except self.pb.error as e:
-            raise SceneError(f"PyBullet cannot load {path}: {e}", path=self.scene.path,
-                             line=line, key=key) from None
+            reason = str(e).rstrip(".")
+            raise error(f"PyBullet cannot load {path}: {reason} (a malformed link, or a mesh "
+                        "file it names is missing)") from None
 
     def _load_robot(self) -> None:
         pb, c, spec = self.pb, self.client, self.scene.robot
@@ -134,16 +164,16 @@ class World:
             else:
                 path, joints, tool = spec.urdf, spec.joints, spec.tool_link
             uid = self._load_urdf(path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]),
-                                  1.0, "robot.urdf", spec.line)
+                                  1.0, lambda message: entry_error(self.scene, message,
+                                                                   "robot", 0, "urdf"))
             pb_joint_names = {j: pb.getJointInfo(uid, j, physicsClientId=c)[1].decode()
                               for j in range(pb.getNumJoints(uid, physicsClientId=c))}
         self.robot_id = uid
         by_name = {name: j for j, name in pb_joint_names.items()}
         missing = [j for j in joints if j not in by_name]
         if missing:
-            raise SceneError(f"the robot has no joint named {', '.join(missing)}; it has "
-                             f"{', '.join(by_name)}", path=self.scene.path, line=spec.line,
-                             key="robot.joints")
+            raise entry_error(self.scene, f"the robot has no joint named {', '.join(missing)}; "
+                              f"it has {', '.join(by_name)}", "robot", 0, "joints")
         self.joint_names: tuple[str, ...] = tuple(joints)
         self._pb_joints = tuple(by_name[j] for j in joints)
         fixed_values = {}
@@ -156,8 +186,8 @@ class World:
                                           fixed_values, link_names)
         self.link_names: tuple[str, ...] = self.chain.names
         if tool not in self.chain.index:
-            raise SceneError(f"the robot has no link named {tool!r}", path=self.scene.path,
-                             line=spec.line, key="robot.tool_link")
+            raise entry_error(self.scene, f"the robot has no link named {tool!r}", "robot", 0,
+                              "tool_link")
         self.tool_link = tool
         self._tool_index = self.chain.index[tool]
         lower, upper = [], []
@@ -340,6 +370,24 @@ class World:
 
     def pb_body(self, name: str) -> int:
         return self._bodies[name]
+
+
+def urdf_problem(path: str) -> str | None:
+    """Why `path` is no URDF file (not XML, or its root is not <robot>), or None.
+
+    Checked before PyBullet, which prints its parser's complaint on the
+    C-level stdout and raises only "Cannot load URDF file".
+    """
+    try:
+        root = ElementTree.parse(path).getroot()
+    except ElementTree.ParseError as e:
+        line, column = e.position
+        return f"{path}:{line}:{column + 1}: not a URDF file: XML {str(e).split(':')[0]}"
+    except OSError as e:
+        return f"cannot read {path}: {e.strerror}"
+    if root.tag != "robot":
+        return f"{path}: not a URDF file: its root element is <{root.tag}>, not <robot>"
+    return None
 
 
 def _pb_names_to_q(pb, client, uid, pb_joints) -> dict[str, int]:
