@@ -377,45 +377,66 @@ class CollisionChecker:
         q = np.asarray(q, dtype=float).reshape(1, -1)
         return self.distances_many(q, body_poses, held, [ignore], activation, static)[0]
 
-    def distances_many(self, qs, body_poses: dict | None = None, held=None,
-                       ignores=None, activation: float = 0.05,
-                       static: bool = False) -> list[list[Contact]]:
+    def distances_many(self, qs, body_poses=None, held=None, ignores=None,
+                       activation: float = 0.05, static: bool = False) -> list[list[Contact]]:
         """`distances` for each row of qs (S, n) at once: one list of contacts per row.
 
-        `ignores`: one set of names per row (or None: nothing ignored); the
-        bodies and the held object are the same for all rows.
+        `body_poses` and `held` are either one value for all rows (as in
+        `distances`) or a list with one value per row (keyframes, each in its
+        own state of the world). `ignores`: one set of names per row (or None:
+        nothing ignored).
         """
         qs = np.asarray(qs, dtype=float).reshape(-1, self.n)
         n_samples = len(qs)
         ignores = [frozenset()] * n_samples if ignores is None else list(ignores)
+        per_row = isinstance(body_poses, list | tuple)
+        helds = list(held) if isinstance(held, list) else [held] * n_samples
         chain = self.world.chain
         frames = chain.fk_batch(qs)
-        held_name = held[0] if held is not None else None
-        poses = self._body_poses(body_poses)
-        bodies = self._body_start if not body_poses else self._moved_boxes(body_poses, poses)
-        shared = self._shared_placed(body_poses)
+        if per_row:
+            poses = [self._body_poses(bp) for bp in body_poses]
+            moved = [frozenset(bp or ()) for bp in body_poses]
+            bodies = self._body_boxes_rows(poses, moved)
+            shared = dict(self._static_placed)
+        else:
+            poses = [self._body_poses(body_poses)] * n_samples
+            moved = [frozenset()] * n_samples  # the shared cache holds this one state
+            bodies = self._start_or_moved(body_poses, poses[0])
+            shared = self._shared_placed(body_poses)
         queries = [_Query(chain, frames[s], shared) for s in range(n_samples)]
         batch = _Batch(self, queries, frames, activation)
-        usable, columns = self._masks(ignores, held_name)
+        usable, columns = self._masks(ignores, [h[0] if h else None for h in helds])
         parts = self.link_parts
         links = _Boxes(frames[:, self._link_index], parts, self._link_local)
         link_moves = self._link_index
-        body_sides = [(("body", name, k), bp, poses[name]) for name, k, bp in self._flat]
+
+        def body_side(s, j):
+            name, k, bp = self._flat[j]
+            key = ("body", name, k, s) if name in moved[s] else ("body", name, k)
+            return key, bp, poses[s][name]
+
+        def body_index(s_):
+            return s_ if per_row else np.zeros_like(s_)
+
         # Robot links vs bodies.
         near = _near(links.c[:, :, None], links.aabb[:, :, None], links.s[:, :, None],
-                     links.radius[None, :, None], bodies.c, bodies.aabb, bodies.s,
-                     bodies.radius) <= activation
+                     links.radius[None, :, None], bodies.c[:, None], bodies.aabb[:, None],
+                     bodies.s[:, None], bodies.radius) <= activation
         near &= self._covered[bool(static)] & usable[:, :, None] & columns[:, None, :]
         s_, i_, j_ = np.nonzero(near)
-        keep = _screen(activation, links, (s_, i_), i_, bodies, (j_,), j_)
+        keep = _screen(activation, links, (s_, i_), i_, bodies, (body_index(s_), j_), j_)
         s_, i_, j_ = s_[keep], i_[keep], j_[keep]
         batch.narrow(s_, [(i, parts[i], None) for i in i_.tolist()],
-                     [body_sides[j] for j in j_.tolist()],
+                     [body_side(s, j) for s, j in zip(s_.tolist(), j_.tolist(), strict=True)],
                      (links.frames[s_, i_], links.points[i_], self._exact_link[i_],
                       link_moves[i_]),
-                     (bodies.frames[j_], bodies.points[j_], self._exact_body[j_], None))
-        if held_name is not None:
-            self._held_pairs(batch, held, frames, links, bodies, body_sides, columns, usable)
+                     (bodies.frames[body_index(s_), j_], bodies.points[j_],
+                      self._exact_body[j_], None))
+        for name in sorted({h[0] for h in helds if h is not None}):
+            rows = np.array([s for s, h in enumerate(helds) if h is not None and h[0] == name])
+            grasps = np.array([np.asarray(helds[s][1], dtype=float) for s in rows])
+            self._held_pairs(batch, name, rows, grasps, frames, links, bodies, per_row,
+                             body_side, columns, usable)
         if len(self._self_a):
             ia, ib = self._self_a, self._self_b
             gap = _near(links.c[:, ia], links.aabb[:, ia], links.s[:, ia], links.radius[ia],
@@ -433,51 +454,56 @@ class CollisionChecker:
                           link_moves[b_]))
         return batch.out
 
-    def _held_pairs(self, batch, held, frames, links, bodies, body_sides, columns, usable):
-        """Held object vs bodies and vs links outside the tool's rigid group."""
-        name, grasp = held
+    def _held_pairs(self, batch, name, rows, grasps, frames, links, bodies, per_row,
+                    body_side, columns, usable):
+        """Object `name` held at rows `rows` (grasps (G, 4, 4)) vs bodies and vs the
+        links outside the tool's rigid group."""
         activation = batch.activation
-        held_poses = frames[:, self._tool] @ np.asarray(grasp, dtype=float)  # (S, 4, 4)
+        held_poses = frames[rows, self._tool] @ grasps  # (G, 4, 4)
         parts = self._held(name)
-        boxes = _Boxes(held_poses[:, None], parts)  # (S, H, ...)
+        boxes = _Boxes(held_poses[:, None], parts)  # (G, H, ...)
         exact = np.array([p.shape.vertices is not None for p in parts], dtype=bool)
         tool = np.full(len(parts), self._tool)
-        for to_links in (False, True):
-            b = links if to_links else bodies
-            if to_links:
-                gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
-                            boxes.radius[None, :, None], b.c[:, None], b.aabb[:, None],
-                            b.s[:, None], b.radius)
-                mask = usable & ~self._in_tool_group
-            else:
-                gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
-                            boxes.radius[None, :, None], b.c, b.aabb, b.s, b.radius)
-                mask = columns
-            s_, h_, j_ = np.nonzero((gap <= activation) & mask[:, None, :])
-            keep = _screen(activation, boxes, (s_, h_), h_, b,
-                           (s_, j_) if to_links else (j_,), j_)
-            s_, h_, j_ = s_[keep], h_[keep], j_[keep]
-            ib = (s_, j_) if to_links else (j_,)
-            sides_a = [(("held", h), parts[h], held_poses[s])
-                       for s, h in zip(s_.tolist(), h_.tolist(), strict=True)]
-            if to_links:
-                sides_b = [(j, self.link_parts[j], None) for j in j_.tolist()]
-                geom_b = (b.frames[ib], b.points[j_], self._exact_link[j_],
-                          self._link_index[j_])
-            else:
-                sides_b = [body_sides[j] for j in j_.tolist()]
-                geom_b = (b.frames[ib], b.points[j_], self._exact_body[j_], None)
-            batch.narrow(s_, sides_a, sides_b,
-                         (boxes.frames[s_, h_], boxes.points[h_], exact[h_], tool[h_]), geom_b)
+        # Vs bodies (per row when each row has its own world state).
+        b = bodies
+        brow = rows if per_row else np.zeros(len(rows), dtype=int)
+        gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
+                    boxes.radius[None, :, None], b.c[brow][:, None], b.aabb[brow][:, None],
+                    b.s[brow][:, None], b.radius)
+        g_, h_, j_ = np.nonzero((gap <= activation) & columns[rows][:, None, :])
+        keep = _screen(activation, boxes, (g_, h_), h_, b, (brow[g_], j_), j_)
+        g_, h_, j_ = g_[keep], h_[keep], j_[keep]
+        s_ = rows[g_]
+        batch.narrow(s_, [(("held", h), parts[h], held_poses[g])
+                          for g, h in zip(g_.tolist(), h_.tolist(), strict=True)],
+                     [body_side(s, j) for s, j in zip(s_.tolist(), j_.tolist(), strict=True)],
+                     (boxes.frames[g_, h_], boxes.points[h_], exact[h_], tool[h_]),
+                     (b.frames[brow[g_], j_], b.points[j_], self._exact_body[j_], None))
+        # Vs links.
+        gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
+                    boxes.radius[None, :, None], links.c[rows][:, None],
+                    links.aabb[rows][:, None], links.s[rows][:, None], links.radius)
+        mask = (usable & ~self._in_tool_group)[rows]
+        g_, h_, j_ = np.nonzero((gap <= activation) & mask[:, None, :])
+        keep = _screen(activation, boxes, (g_, h_), h_, links, (rows[g_], j_), j_)
+        g_, h_, j_ = g_[keep], h_[keep], j_[keep]
+        s_ = rows[g_]
+        batch.narrow(s_, [(("held", h), parts[h], held_poses[g])
+                          for g, h in zip(g_.tolist(), h_.tolist(), strict=True)],
+                     [(j, self.link_parts[j], None) for j in j_.tolist()],
+                     (boxes.frames[g_, h_], boxes.points[h_], exact[h_], tool[h_]),
+                     (links.frames[s_, j_], links.points[j_], self._exact_link[j_],
+                      self._link_index[j_]))
 
-    def _masks(self, ignores, held_name):
-        """(usable (S, link parts), columns (S, body parts)) from the ignored names."""
+    def _masks(self, ignores, held_names):
+        """(usable (S, link parts), columns (S, body parts)) from the ignored names and
+        the object held at each row."""
         n_samples = len(ignores)
         usable = np.ones((n_samples, len(self.link_parts)), dtype=bool)
         columns = np.ones((n_samples, len(self._flat)), dtype=bool)
-        for j in self._flat_of.get(held_name, ()):
-            columns[:, j] = False
-        for s, ignore in enumerate(ignores):
+        for s, (ignore, held_name) in enumerate(zip(ignores, held_names, strict=True)):
+            for j in self._flat_of.get(held_name, ()):
+                columns[s, j] = False
             if not ignore:
                 continue
             usable[s] = [not _ignored(p, ignore) for p in self.link_parts]
@@ -554,11 +580,22 @@ class CollisionChecker:
     # ------------------------------------------------------------ internals
 
     def _body_boxes(self, poses) -> _Boxes:
-        frames = np.array([poses[name] for name, _, _ in self._flat]).reshape(-1, 4, 4)
+        """Boxes of all body parts in one world state, with a leading row axis of 1."""
+        frames = np.array([poses[name] for name, _, _ in self._flat]).reshape(1, -1, 4, 4)
         return _Boxes(frames, [p for _, _, p in self._flat], self._body_local)
 
-    def _moved_boxes(self, body_poses, poses) -> _Boxes:
-        if not any(name in self._flat_of for name in body_poses):
+    def _body_boxes_rows(self, poses: list[dict], moved: list[frozenset]) -> _Boxes:
+        """Boxes of all body parts in each row's world state: leading axis S."""
+        if not any(moved):
+            return _Boxes(np.broadcast_to(self._body_start.frames,
+                                          (len(poses), *self._body_start.frames.shape[1:])),
+                          [p for _, _, p in self._flat], self._body_local)
+        frames = np.array([[p[name] for name, _, _ in self._flat] for p in poses])
+        return _Boxes(frames.reshape(len(poses), -1, 4, 4), [p for _, _, p in self._flat],
+                      self._body_local)
+
+    def _start_or_moved(self, body_poses, poses) -> _Boxes:
+        if not body_poses or not any(name in self._flat_of for name in body_poses):
             return self._body_start
         return self._body_boxes(poses)
 

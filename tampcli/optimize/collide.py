@@ -56,23 +56,15 @@ def held_spec(held: Held | None):
     return (held.name, held.grasp) if held is not None else None
 
 
-def collision_rows(rows: RowSet, step: str, checker, q, q_weights, frame: Frame | None,
-                   held: Held | None, poses: dict[str, PoseX], keys: list[str], ignore,
-                   activation: float, margin: float) -> None:
-    """Add len(keys) rows for configuration q = sum of weights * blocks (see module doc).
+def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | None,
+                 held: Held | None, poses: dict[str, PoseX], keys: list[str],
+                 activation: float, margin: float) -> None:
+    """Add len(keys) rows for configuration q = sum of weights * blocks (see module doc),
+    from the contacts the checker found at q.
 
     `q_weights`: [(block, weight)] whose weighted sum is q (one block at a keyframe;
     two at a point between waypoints). `poses`: bodies not at their start pose.
     """
-    contacts = checker.distances(q, body_matrices(poses), held_spec(held), frozenset(ignore),
-                                 activation)
-    contact_rows(rows, step, contacts, q_weights, frame, held, poses, keys, activation, margin)
-
-
-def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | None,
-                 held: Held | None, poses: dict[str, PoseX], keys: list[str],
-                 activation: float, margin: float) -> None:
-    """The rows of `collision_rows` from contacts the checker already computed."""
     best: dict[str, object] = {}
     for c in contacts:
         k = _key(c)

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from tampcli.optimize import constraints as C
-from tampcli.optimize.collide import collision_rows, held_of, row_keys
+from tampcli.optimize.collide import body_matrices, contact_rows, held_of, held_spec, row_keys
 from tampcli.optimize.expr import PoseX, RowSet, constant_pose, held_posex, planar_pose
 from tampcli.optimize.grips import held_pose
 from tampcli.optimize.init import target_rect
@@ -122,13 +122,14 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
         frame = kin.frame(q_of(k))
         return frame, grip, t, t_block, held_posex(held_pose(frame, grip, t), f"k{k}", t_block)
 
+    # Collision rows of all keyframes come from one batched query after the walk,
+    # each keyframe in its own world state (what rests where, what is held).
+    pending = []
+
     def collide(k, step, held_spec, frame, ignore):
-        if not collisions:
-            return
-        moved = {n: P for n, P in state.items() if P.jac}
-        keys = row_keys(bodies, ignore, held_spec)
-        collision_rows(rows.ineq, step.name, checker, q_of(k), [(f"k{k}", 1.0)], frame,
-                       held_spec, moved, keys, ignore, opts.activation, opts.margin)
+        if collisions:
+            moved = {n: P for n, P in state.items() if P.jac}
+            pending.append((k, step.name, held_spec, frame, frozenset(ignore), moved))
 
     for step in problem.steps:
         if step.kind == "grasp":
@@ -176,6 +177,15 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
                 C.point_in_rect(rows.ineq, step.name, tool, lo, hi,
                                 f"tool outside {step.target}")
             collide(k, step, _held_spec(problem, held, choices, vals), frame, set())
+    if pending:
+        contacts = checker.distances_many(
+            np.array([q_of(k) for k, *_ in pending]),
+            [body_matrices(moved) for *_, moved in pending],
+            [held_spec(h) for _, _, h, _, _, _ in pending],
+            [ignore for *_, ignore, _ in pending], opts.activation)
+        for (k, name, h, frame, ignore, moved), found in zip(pending, contacts, strict=True):
+            contact_rows(rows.ineq, name, found, [(f"k{k}", 1.0)], frame, h, moved,
+                         row_keys(bodies, ignore, h), opts.activation, opts.margin)
     # Cost: sum over motions of |dq|^2 / T, the least path cost through these keyframes.
     T = opts.waypoints
     prev, prev_block = np.asarray(start, dtype=float), None

@@ -264,3 +264,42 @@ def test_held_object_gradients_long_sweep(panda):
                 np.testing.assert_allclose(contact.gradient, numeric, atol=atol)
                 checked += 1
     assert checked >= 10
+
+
+def _as_set(contacts):
+    return sorted((c.a, c.b, round(c.distance, 9)) for c in contacts)
+
+
+def test_batched_rows_equal_one_query_each(panda):
+    """distances_many, with one world state and held object per row, gives each row
+    exactly what `distances` gives it alone (contacts, distances and gradients)."""
+    world, checker = panda
+    rng = np.random.default_rng(5)
+    movable = [b.name for b in world.scene.bodies if not b.fixed]
+    qs, poses, helds, ignores = [], [], [], []
+    for k in range(24):
+        q = world.start + rng.normal(0.0, 0.4, world.n)
+        q = np.clip(q, world.lower, world.upper)
+        moved = {}
+        if k % 3 and movable:
+            name = movable[k % len(movable)]
+            moved[name] = transforms.pose(transforms.rot_z(rng.uniform(-3, 3)),
+                                          (*rng.uniform([0.3, -0.3], [0.6, 0.3]), 0.03))
+        held = None
+        if k % 4 == 1 and movable:
+            held = (movable[0], transforms.pose(None, (0.0, 0.0, 0.03)))
+        qs.append(q)
+        poses.append(moved)
+        helds.append(held)
+        ignores.append(frozenset({"link:panda_hand"}) if k % 5 == 2 else frozenset())
+    batched = checker.distances_many(np.array(qs), poses, helds, ignores, activation=0.1)
+    found = 0
+    for q, moved, held, ignore, rows in zip(qs, poses, helds, ignores, batched, strict=True):
+        alone = checker.distances(q, moved, held, ignore, activation=0.1)
+        assert _as_set(rows) == _as_set(alone)
+        by_pair = {(c.a, c.b, round(c.distance, 9)): c for c in alone}
+        for c in rows:
+            np.testing.assert_allclose(c.gradient, by_pair[(c.a, c.b, round(c.distance, 9))]
+                                       .gradient, atol=1e-9)
+        found += len(rows)
+    assert found > 20
