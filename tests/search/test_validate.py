@@ -17,29 +17,10 @@ import pytest
 from tampcli.pddl import parser
 from tampcli.search.plan_text import PlanStep, PlanSyntaxError, parse_plan
 from tampcli.search.validate import validate_plan, validate_plan_file
-
-IPC = Path(__file__).resolve().parents[3] / "shared" / "benchmarks" / "ipc"
+from tests.search.ipc_oracle import domain_of, problems, up_verdict
 
 DOMAINS = ["gripper", "blocks", "logistics00", "miconic-fulladl", "briefcaseworld", "assembly",
            "psr-small", "psr-large", "elevators-opt08-strips"]
-
-
-def natural(path: Path):
-    return [int(t) if t.isdigit() else t for t in re.split(r"(\d+)", path.name)]
-
-
-def problems(domain: str) -> list[Path]:
-    files = [p for p in (IPC / domain).glob("*.pddl") if "domain" not in p.name]
-    return sorted(files, key=natural)
-
-
-def domain_of(problem: Path) -> Path:
-    stem = problem.stem.split("-")[0]
-    for name in (f"{stem}-domain.pddl", f"domain_{stem}.pddl", "domain.pddl"):
-        if (problem.parent / name).exists():
-            return problem.parent / name
-    raise FileNotFoundError(problem)
-
 
 CASES = [pytest.param(d, i, id=f"{d}-{i + 1}",
                       marks=() if i == 0 else pytest.mark.slow)
@@ -69,48 +50,6 @@ def fd_plan(problem: Path, tmp: Path) -> tuple[list[str], float]:
 @pytest.fixture(scope="module")
 def tmp(tmp_path_factory) -> Path:
     return tmp_path_factory.mktemp("plans")
-
-
-def up_verdict(problem: Path, plan: list[str]):
-    """(valid, cost, index of the inapplicable step, or "ill-typed") by unified-planning.
-
-    None when unified-planning cannot read the domain (derived predicates, and
-    logistics00, whose predicate `in` it confuses with its own operator).
-    """
-    up_io = pytest.importorskip("unified_planning.io")
-    from unified_planning.engines import ValidationResultStatus
-    from unified_planning.exceptions import UPTypeError
-    from unified_planning.plans import SequentialPlan
-    from unified_planning.shortcuts import PlanValidator, get_environment
-
-    get_environment().credits_stream = None
-    reader = up_io.PDDLReader()
-    try:
-        pb = reader.parse_problem(str(domain_of(problem)), str(problem))
-    except Exception:  # noqa: BLE001 - whatever it cannot read, it has no opinion on
-        return None
-    plan_path = Path(f"/tmp/up-{id(plan)}.plan")
-    plan_path.write_text("\n".join(plan) + "\n")
-    try:
-        up_plan = reader.parse_plan(pb, str(plan_path))
-    except UPTypeError:
-        return False, None, "ill-typed"
-    finally:
-        plan_path.unlink()
-    actions = list(up_plan.actions)
-    try:
-        validator = PlanValidator(problem_kind=pb.kind)
-    except Exception:  # noqa: BLE001 - e.g. no validator for action costs
-        return None
-    with validator:
-        result = validator.validate(pb, SequentialPlan(actions))
-    failing = None
-    if result.inapplicable_action is not None:
-        failing = next(i for i, a in enumerate(actions) if a is result.inapplicable_action)
-    cost = None
-    if result.metric_evaluations:
-        cost = float(next(iter(result.metric_evaluations.values())))
-    return result.status == ValidationResultStatus.VALID, cost, failing
 
 
 @pytest.mark.parametrize("domain,index", CASES)
