@@ -25,7 +25,9 @@ f = g + d(end). Why the order is exact:
   restarts, skipping the plans already out (by cost below the current bound,
   by identity at it). Each retry doubles the exploration's budget; once the
   layer g + h <= B is fully expanded, a path that reaches an unexpanded state
-  t has f >= g(t) + h(t) > B, so the enumeration up to B completes.
+  t has f >= g(t) + h(t) > B, so the enumeration up to B completes. Until a
+  goal state is expanded there is no plan to enumerate: the exploration
+  alone completes each layer and raises B to the smallest g + h left.
 - Inside the expanded part d is exact: a popped path extends to a plan of
   cost exactly f, little work is wasted. At equal f, continuations already
   known to reach a goal come before those through unexpanded states, so the
@@ -182,6 +184,13 @@ class TopK:
                     finished = graph.explore(bound, chunk)
                     if graph.complete:
                         bound = INF
+                    if not graph.goals:
+                        # no goal expanded, so no plan of cost <= bound: nothing to
+                        # enumerate (the full distances would be wasted on it)
+                        if not finished:
+                            continue
+                        next_f = INF
+                        break
                     self.stats["phases"] += 1
                     next_f = yield from self._enumerate(*graph.distances(), bound, done,
                                                         yielded)

@@ -16,7 +16,8 @@ Heuristic values are computed lazily: a child is queued with a bound known
 from its parent, h(parent) - c(parent, child) (admissible: h(parent) <=
 h*(parent) <= c + h*(child)), or better the parent's landmarks that the
 operator does not touch (topk_landmarks.py), and the heuristic runs only
-when the child comes out of the queue at a key <= B.
+when the child comes out of the queue at a key <= B, starting from those
+landmarks (from the parent that gave the best bound).
 """
 
 from __future__ import annotations
@@ -27,6 +28,7 @@ from collections.abc import Callable
 from tampcli.task.task import Task
 
 INF = float("inf")
+_NOT_INHERITED = (0.0,)
 
 
 class TimeUp(Exception):
@@ -46,6 +48,8 @@ class BoundedGraph:
         self.hlow: list[float] = []  # best admissible bound known before evaluating h
         self._landmarks: dict[int, tuple] = {}  # of evaluated states not yet expanded
         self._partial: dict[int, tuple] = {}  # LM-cut stopped at a budget, to resume
+        # of states not evaluated yet: (value, a parent's landmarks, op from it)
+        self._inherit: dict[int, tuple[float, list, int]] = {}
         self._with_landmarks = getattr(heuristic, "landmarks", None)
         # per state, (op index, successor id) of every applicable op once expanded
         self.succ: list[tuple[tuple[int, int], ...] | None] = []
@@ -56,6 +60,7 @@ class BoundedGraph:
         self.seq = 0
         self.expansions = 0
         self.evaluations = 0
+        self.goals = 0  # expanded goal states
         self._id(task.init, 0.0, 0.0)
 
     @property
@@ -99,7 +104,7 @@ class BoundedGraph:
 
         With `limit`, stop after that many expansions; True when done.
         """
-        successors, index, costs = self.task.successors, self.op_index, self.costs
+        costs = self.costs
         stop = None if limit is None else self.expansions + limit
         while True:
             self._drop_stale()
@@ -122,15 +127,9 @@ class BoundedGraph:
                 h = self.h[sid]
             succ = self.succ[sid]
             if succ is None:
-                self.expansions += 1
                 if self.expansions % 256 == 0:
                     self.check_time()
-                state = self.states[sid]
-                self.goal[sid] = self.task.is_goal(state)
-                child_bound = self._child_bounds(sid, h)
-                succ = self.succ[sid] = tuple(
-                    (index[id(op)], self._id(nxt, g + op.cost, child_bound(index[id(op)])))
-                    for op, nxt in successors(state))
+                self._expand(sid, g, h)
             else:
                 for op, nid in succ:
                     self._id(self.states[nid], g + costs[op], h - costs[op])
@@ -144,13 +143,44 @@ class BoundedGraph:
             h = self._evaluate(sid, INF)
         if h == INF:
             return
+        self._expand(sid, self.g[sid], h)
+
+    def _expand(self, sid: int, g: float, h: float) -> None:
+        """Generate the successors, each queued with the best bound known from here.
+
+        With landmarks, a successor also keeps those it inherits (the ones its
+        operator is not in), for LM-cut to start from (see topk_landmarks.py).
+        """
         self.expansions += 1
-        index, state, g = self.op_index, self.states[sid], self.g[sid]
-        self.goal[sid] = self.task.is_goal(state)
-        child_bound = self._child_bounds(sid, h)
-        self.succ[sid] = tuple(
-            (index[id(op)], self._id(nxt, g + op.cost, child_bound(index[id(op)])))
-            for op, nxt in self.task.successors(state))
+        state = self.states[sid]
+        if self.task.is_goal(state):
+            self.goal[sid] = True
+            self.goals += 1
+        index, costs = self.op_index, self.costs
+        marked = self._landmarks.pop(sid, None)
+        succ = []
+        if marked is None:
+            for op, nxt in self.task.successors(state):
+                o = index[id(op)]
+                succ.append((o, self._id(nxt, g + costs[o], h - costs[o])))
+        else:
+            total, found = marked
+            charged: dict[int, float] = {}
+            for m, ops in found:
+                for o in ops:
+                    charged[o] = charged.get(o, 0.0) + m
+            inherit, hs, partial = self._inherit, self.h, self._partial
+            for op, nxt in self.task.successors(state):
+                o = index[id(op)]
+                c = costs[o]
+                kept = total - charged.get(o, 0.0)
+                nid = self._id(nxt, g + c, kept if kept > h - c else h - c)
+                # the most valuable inheritance wins; none once LM-cut has run on it
+                if (kept > 0.0 and hs[nid] is None and nid not in partial
+                        and kept > inherit.get(nid, _NOT_INHERITED)[0]):
+                    inherit[nid] = (kept, found, o)
+                succ.append((o, nid))
+        self.succ[sid] = tuple(succ)
 
     def _requeue(self, key: float, g: float, sid: int) -> None:
         self.seq += 1
@@ -168,7 +198,12 @@ class BoundedGraph:
         if self._with_landmarks is None:
             value, complete = self.heuristic(state), True
         else:
-            value, found, rest = self._with_landmarks(state, budget, self._partial.pop(sid, None))
+            inherited = self._inherit.pop(sid, None)
+            if inherited is not None:
+                _, found, op = inherited
+                inherited = [lm for lm in found if op not in lm[1]]
+            value, found, rest = self._with_landmarks(state, budget, self._partial.pop(sid, None),
+                                                      inherited or ())
             complete = rest is None
             if not complete:
                 self._partial[sid] = rest
@@ -180,19 +215,6 @@ class BoundedGraph:
         else:
             self.hlow[sid] = value
         return value
-
-    def _child_bounds(self, sid: int, h: float):
-        """op index -> admissible bound on the h of the successor by that op."""
-        costs = self.costs
-        marked = self._landmarks.pop(sid, None)
-        if marked is None:
-            return lambda op: h - costs[op]
-        total, found = marked
-        charged: dict[int, float] = {}
-        for m, ops in found:
-            for op in ops:
-                charged[op] = charged.get(op, 0.0) + m
-        return lambda op: max(h - costs[op], total - charged.get(op, 0.0))
 
     def lower_bound(self, sid: int) -> float:
         """The admissible h known for a state (its h, else its lazy bound)."""
