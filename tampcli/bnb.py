@@ -160,6 +160,7 @@ def branch_and_bound(
     w = options.symbolic_weight
     emit = on_event or (lambda event: None)
     tree = _PrefixTree()
+    evaluated: dict[tuple[str, ...], int] = {}  # geometric actions -> rank that had them
     records: list[SkeletonRecord] = []
     stats = {"skeletons_generated": 0, "skeletons_optimized": 0, "skeletons_pruned": 0,
              "skeletons_infeasible": 0, "nlp_solves": 0, "nlp_iterations": 0,
@@ -213,6 +214,20 @@ def branch_and_bound(
             stop_reason = "optimal"
             break
 
+        # Symbolic-only actions add no motion and no constraint: a skeleton whose
+        # geometric actions are those of one already evaluated (say, with `cook`
+        # moved past the last motion) has the same trajectory NLP, and a symbolic
+        # cost no lower (skeletons arrive in non-decreasing cost): it cannot win.
+        motion = tuple(n for op, n in zip(ops, names, strict=True) if is_geometric(op))
+        twin = evaluated.get(motion)
+        if twin is not None:
+            stats["skeletons_pruned"] += 1
+            why = f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
+            records.append(SkeletonRecord(rank, names, symbolic, "pruned", proved_bound,
+                                          "proved", None, None, None, 0.0, why))
+            emit(Event("outcome", rank, names, symbolic, outcome="pruned", message=why))
+            continue
+
         blocked = tree.blocked(names)
         if blocked is not None:
             stats["skeletons_pruned"] += 1
@@ -223,6 +238,7 @@ def branch_and_bound(
             continue
 
         stats["skeletons_optimized"] += 1
+        evaluated[motion] = rank
         outcome, reason, reached, heuristic_bound, nlp_cost = "solved", None, None, None, None
         warm = tree.warm_for(names)
         path_result = None

@@ -54,6 +54,17 @@ class Kinematics:
         self._last_q, self._last = q.copy(), f
         return f
 
+    def frames(self, qs) -> list[Frame]:
+        """`frame` of each row of qs, from one batched forward kinematics."""
+        qs = np.atleast_2d(np.asarray(qs, dtype=float))
+        if len(qs) == 0:
+            return []
+        frames = self.chain.fk_batch(qs)
+        jac = self.chain.tool_jacobian_batch(frames, self.tool)
+        tool = frames[:, self.tool]
+        return [Frame(tool[i, :3, 3].copy(), tool[i, :3, :3].copy(), jac[i, :3], jac[i, 3:])
+                for i in range(len(qs))]
+
 
 def skew(v) -> np.ndarray:
     return np.array([[0.0, -v[2], v[1]], [v[2], 0.0, -v[0]], [-v[1], v[0], 0.0]])

@@ -114,12 +114,15 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
     def q_of(k):
         return vals[f"k{k}"]
 
+    # The tool frames of all keyframes at once (one batched forward kinematics).
+    tool_frames = kin.frames([q_of(k) for k in range(problem.n_keyframes)])
+
     def gripped(k, grip_step_index):
         step = problem.steps[grip_step_index]
         grip = grip_of(problem, step, choices)
         t_block = f"g{grip_step_index}" if grip.has_param else None
         t = float(vals[t_block][0]) if t_block else 0.0
-        frame = kin.frame(q_of(k))
+        frame = tool_frames[k]
         return frame, grip, t, t_block, held_posex(held_pose(frame, grip, t), f"k{k}", t_block)
 
     # Collision rows of all keyframes come from one batched query after the walk,
@@ -169,7 +172,7 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
             state[step.obj] = H1
         elif step.kind == "move":
             (k,) = step.keyframes
-            frame = kin.frame(q_of(k))
+            frame = tool_frames[k]
             if step.target is not None:
                 tool = PoseX(np.concatenate([frame.p, np.zeros(9)]),
                              {f"k{k}": np.vstack([frame.Jp, np.zeros((9, problem.n))])})

@@ -149,3 +149,18 @@ def test_options_are_validated():
         BnBOptions(max_skeletons=0)
     with pytest.raises(ValueError):
         BnBOptions(symbolic_weight=-1)
+
+
+def test_skeleton_differing_only_in_symbolic_actions_is_not_optimized_again():
+    # "cook" has no geometry: (move, cook, place) and (move, place, cook) are one NLP.
+    src = Source([(("move", "cook", "place"), 3), (("move", "place", "cook"), 3),
+                  (("move", "place", "cook", "move2"), 4)])
+    calls = []
+    res = branch_and_bound(src, table_evaluator({}, calls), BnBOptions(symbolic_weight=0.1),
+                           is_geometric=lambda op: op.name != "cook")
+    assert res.skeletons[1].outcome == "pruned"
+    assert res.skeletons[1].bound_kind == "proved"
+    assert "#1" in res.skeletons[1].reason
+    assert not any(names == ("move", "place", "cook") for names, _ in calls)
+    # A skeleton with other geometric actions is still evaluated.
+    assert any(names == ("move", "place", "cook", "move2") for names, _ in calls)
