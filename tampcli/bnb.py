@@ -310,6 +310,9 @@ def branch_and_bound(
     optimal = stop_reason == "optimal"
     stats["stop"] = stop_reason
     stats["seconds"] = elapsed()
+    # When the first solution came: what a user waits for before `--anytime` or the
+    # search for a better skeleton goes on.
+    stats["first_solution_seconds"] = improvements[0][0] if improvements else None
     emit(Event("stop", rank, message=stop_reason, seconds=elapsed()))
 
     if incumbent is not None:

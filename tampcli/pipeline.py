@@ -95,7 +95,7 @@ def solve(domain_path: str, problem_path: str, scene_path: str | None = None,
 
         task = ground(domain, problem)
 
-    from tampcli.geometry.scene import find_modes, find_scene
+    from tampcli.geometry.locate import find_modes, find_scene
 
     scene_file = scene_path or find_scene(problem_path)
     if scene_file is None:
@@ -137,7 +137,7 @@ def _solve_geometric(domain_path, problem_path, scene_file, modes_file, domain, 
     with timers.stage("setup"):
         from tampcli.errors import SceneError
         from tampcli.geometry.collision import CollisionChecker
-        from tampcli.geometry.scene import load_modes, load_scene
+        from tampcli.geometry.scene import load_modes, load_scene  # numpy, tomllib
         from tampcli.geometry.world import World
         from tampcli.optimize.options import OptimizeOptions
         from tampcli.optimize.problem import lower

@@ -73,12 +73,6 @@ class Modes(Mapping):
             return Mode(action, "none")
 
 
-def find_modes(domain_path: str | Path) -> Path | None:
-    """`modes.toml` beside the domain file, or None."""
-    candidate = Path(domain_path).with_name("modes.toml")
-    return candidate if candidate.is_file() else None
-
-
 def load_modes(path: str | Path, domain: ast.Domain) -> Modes:
     src = read_toml(str(path))
     table = []

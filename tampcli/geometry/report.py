@@ -13,8 +13,9 @@ import math
 import numpy as np
 
 from tampcli.geometry.collision import CollisionChecker
-from tampcli.geometry.modes import find_modes, load_modes
-from tampcli.geometry.scene import find_scene, load_scene
+from tampcli.geometry.locate import find_modes, find_scene
+from tampcli.geometry.modes import load_modes
+from tampcli.geometry.scene import load_scene
 from tampcli.geometry.startcheck import check_start_state
 from tampcli.geometry.tomlsrc import read_toml
 from tampcli.geometry.world import World

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from tampcli.geometry.locate import find_modes, find_scene
 from tampcli.geometry.model import (
     COLORS,
     DEFAULT_COLOR,
@@ -25,7 +26,7 @@ from tampcli.geometry.model import (
     RobotSpec,
     Scene,
 )
-from tampcli.geometry.modes import Mode, Modes, find_modes, load_modes
+from tampcli.geometry.modes import Mode, Modes, load_modes
 from tampcli.geometry.scene_check import (
     check_against_problem,
     check_modes_against_scene,
@@ -40,13 +41,6 @@ __all__ = [
     "Mode", "Modes", "Region", "RobotSpec", "Scene", "check_modes_against_scene", "find_modes",
     "find_scene", "load_modes", "load_scene", "pddl_objects",
 ]
-
-
-def find_scene(problem_path: str | Path) -> Path | None:
-    """`p01.pddl` -> `p01.scene.toml` beside it, or None when there is none."""
-    p = Path(problem_path)
-    candidate = p.with_name(p.stem + ".scene.toml")
-    return candidate if candidate.is_file() else None
 
 
 # ------------------------------------------------------------------ loading

@@ -13,8 +13,6 @@ from pathlib import Path
 from xml.etree import ElementTree
 
 import numpy as np
-import pybullet
-import pybullet_data
 
 from tampcli.errors import SceneError
 from tampcli.geometry import transforms
@@ -23,6 +21,34 @@ from tampcli.geometry.ik import solve_ik
 from tampcli.geometry.scene import PANDA_READY, Body, Scene
 from tampcli.geometry.scene_check import body_error, entry_error
 from tampcli.geometry.shapes import mesh_hulls
+
+
+def _import_pybullet():
+    """PyBullet writes "pybullet build time: ..." on the process's stderr (fd 2, from C)
+    when imported: keep that line off what users read."""
+    import os
+    import sys
+
+    sys.stderr.flush()
+    try:
+        saved = os.dup(2)
+    except OSError:  # no fd 2 to silence
+        import pybullet as pb
+        import pybullet_data as data
+        return pb, data
+    try:
+        quiet = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(quiet, 2)
+        os.close(quiet)
+        import pybullet as pb
+        import pybullet_data as data
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+    return pb, data
+
+
+pybullet, pybullet_data = _import_pybullet()
 
 PANDA_URDF = "franka_panda/panda.urdf"
 PANDA_JOINTS = tuple(f"panda_joint{i}" for i in range(1, 8))

@@ -4,7 +4,8 @@ from pathlib import Path
 
 import pytest
 
-from tampcli.geometry.modes import find_modes, load_modes
+from tampcli.geometry.locate import find_modes
+from tampcli.geometry.modes import load_modes
 from tampcli.geometry.scene import load_scene
 from tampcli.pddl import parser
 
