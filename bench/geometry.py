@@ -39,10 +39,11 @@ def ten_box_scene(seed: int = 0) -> Scene:
 
 
 def timed(fn, repeat: int) -> float:
-    """Best of 3 runs, CPU seconds per call (process time: robust to a shared machine)."""
+    """Best of 7 runs, CPU seconds per call (process time; the best of several rounds
+    filters the periods when the shared machine runs slow)."""
     fn()
     best = float("inf")
-    for _ in range(3):
+    for _ in range(7):
         start = time.process_time()
         for _ in range(repeat):
             fn()
@@ -251,8 +252,9 @@ def main(argv=None) -> int:
         "",
         "Notes.",
         "",
-        "- Times are CPU (process) time, best of several rounds; on a machine this loaded "
-        "they still vary by about +-40 % between runs, the ratios less.",
+        "- Times are CPU (process) time, best of 7 rounds; this virtual machine's speed "
+        "drifts (the same figure has come out up to 2x apart in consecutive runs of this "
+        "script), the ratios to the peer much less.",
         "- \"Per pair\" includes what a configuration costs before its first pair (the "
         "joint-axis basis for gradients, placing the link's shape), spread over the few "
         "pairs each random configuration has; FCL's own query is part of the narrow phase.",

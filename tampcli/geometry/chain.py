@@ -69,7 +69,11 @@ class Chain:
                 t = np.zeros((4, 4))
                 t[:3, 3] = link.axis
                 b = origin @ t
-            self._plan.append((i, link.parent, origin, b, c, kind, link.q_index))
+            # [A; B; C] flattened: the local transform is (1, f1, f2) @ abc, one product.
+            abc = None
+            if kind == REVOLUTE:
+                abc = np.stack([origin.ravel(), b.ravel(), c.ravel()])
+            self._plan.append((i, link.parent, origin, b, c, kind, link.q_index, abc))
         # Which variables move each link: ancestors' joints in q.
         self.moved_by = np.zeros((len(links), n), dtype=bool)
         self.joint_link = np.full(n, -1)  # q index -> link whose joint it is
@@ -92,10 +96,12 @@ class Chain:
         """World 4x4 frames of all links, in `names` order."""
         frames = [self.base_pose] * len(self.links)
         sin, cos = math.sin, math.cos
-        for i, parent, a, b, c, kind, qi in self._plan:
+        coef = np.ones(3)
+        for i, parent, a, b, _c, kind, qi, abc in self._plan:
             if kind == REVOLUTE:
                 v = float(q[qi])
-                frames[i] = frames[parent] @ (a + sin(v) * b + (1.0 - cos(v)) * c)
+                coef[1], coef[2] = sin(v), 1.0 - cos(v)
+                frames[i] = frames[parent] @ (coef @ abc).reshape(4, 4)
             elif kind == PRISMATIC:
                 frames[i] = frames[parent] @ (a + float(q[qi]) * b)
             else:
@@ -110,7 +116,7 @@ class Chain:
         qs = np.atleast_2d(np.asarray(qs, dtype=float))
         out = np.empty((len(qs), len(self.links), 4, 4))
         out[:, 0] = self.base_pose
-        for i, parent, a, b, c, kind, qi in self._plan:
+        for i, parent, a, b, c, kind, qi, _abc in self._plan:
             if kind == REVOLUTE:
                 v = qs[:, qi, None, None]
                 local = a + np.sin(v) * b + (1.0 - np.cos(v)) * c
