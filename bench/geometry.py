@@ -15,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-from tampcli.geometry import collision, transforms
+from tampcli.geometry import pairs, transforms
 from tampcli.geometry.collision import CollisionChecker
 from tampcli.geometry.narrow import Placed, signed_distance
 from tampcli.geometry.scene import Body, RobotSpec, Scene
@@ -153,18 +153,18 @@ def bench_batched(checker, qs):
     reached the narrow phase); the broad phase and all glue are included.
     """
     batch = np.array(qs)
-    real = collision.fcl_distance
+    real = pairs.fcl_distance
     calls = [0]
 
     def counting(*args):
         calls[0] += 1
         return real(*args)
 
-    collision.fcl_distance = counting
+    pairs.fcl_distance = counting
     try:
         checker.distances_many(batch, activation=0.05)
     finally:
-        collision.fcl_distance = real
+        pairs.fcl_distance = real
     seconds = timed(lambda: checker.distances_many(batch, activation=0.05), 5)
     return seconds / calls[0], seconds / len(qs), calls[0]
 

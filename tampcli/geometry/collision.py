@@ -18,10 +18,11 @@ Pairs covered by `CollisionChecker.distances`:
 
 Broad phase, for a batch of configurations at once (`distances_many`): the
 links' frames by one batched forward kinematics, then world-aligned boxes and
-bounding spheres of every (sample, part, body) triple, then the oriented-box
-gap of the survivors (obb.py), all as array operations; only pairs whose
-bounds are within `activation` reach the narrow phase (narrow.py: FCL,
-checked), one query each. Distances are signed (negative
+bounding spheres of every (row, part, body) triple, then the oriented-box and
+hull-point gaps of the survivors (obb.py), all as array operations; only
+pairs whose bounds are within `activation` reach the narrow phase (pairs.py:
+FCL per pair, its answers checked and the gradients taken for all pairs
+together; narrow.py, prism.py). Distances are signed (negative
 = penetration depth). `normal` points from a to b; `gradient` = d distance
 / d q = -normal . J_a(point_a) (+ normal . J_b(point_b) when b moves with q).
 """
@@ -29,13 +30,13 @@ checked), one query each. Distances are signed (negative
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import fcl
 import numpy as np
 
-from tampcli.geometry import obb, prism, transforms
-from tampcli.geometry.narrow import TOLERANCE, Placed, checked, fcl_distance, signed_distance
+from tampcli.geometry import transforms
+from tampcli.geometry.narrow import Placed, signed_distance
+from tampcli.geometry.pairs import Batch, Boxes, Contact, Query, broad_gaps, local_boxes, screen
 from tampcli.geometry.parts import (
     Part,
     body_shapes,
@@ -47,224 +48,8 @@ from tampcli.geometry.parts import (
 from tampcli.geometry.scene import PANDA_READY
 
 SELF_MARGIN = 0.01  # m: link pairs this close in the default configuration are not checked
-SCALAR_PAIRS = 4  # groups of at most this many pairs skip the array set-up (measured)
-HULL_SCREEN = 4  # the hull-point screen pays for itself from this many candidates on
 
-
-@dataclass(frozen=True)
-class Contact:
-    a: str  # "link:NAME", "held:NAME" or "body:NAME"
-    b: str
-    distance: float  # signed, m; negative = penetration
-    point_a: np.ndarray = field(repr=False)  # world witness point on a
-    point_b: np.ndarray = field(repr=False)
-    normal: np.ndarray = field(repr=False)  # unit, from a to b
-    gradient: np.ndarray = field(repr=False)  # (n,) d distance / d q
-
-
-class _Query:
-    """Per-configuration state: link frames, joint axes and placed link shapes.
-
-    `shared` holds the placed shapes of scene bodies, which do not depend on
-    the configuration: one dict for all samples of a batch.
-    """
-
-    __slots__ = ("frames", "chain", "_axes", "_placed", "_shared")
-
-    def __init__(self, chain, frames, shared: dict):
-        self.chain = chain
-        self.frames = frames
-        self._axes = None
-        self._placed: dict = {}
-        self._shared = shared
-
-    def placed(self, key, part: Part, pose: np.ndarray | None) -> Placed:
-        cache = self._shared if isinstance(key, tuple) and key[0] == "body" else self._placed
-        found = cache.get(key)
-        if found is None:
-            if pose is None:
-                pose = self.frames[part.link]
-            t = pose if part.identity_local else pose @ part.shape.local
-            found = Placed(part.shape, t)
-            cache[key] = found
-        return found
-
-    def normal_gradient(self, link: int, point, normal) -> np.ndarray:
-        """normal . d point / d q for a point attached to chain link `link`."""
-        if self._axes is None:
-            self._axes = self.chain.normal_gradient_basis(self.frames)
-        p0, p1, p2 = point.tolist()
-        n0, n1, n2 = normal.tolist()
-        v = np.array([p1 * n2 - p2 * n1, p2 * n0 - p0 * n2, p0 * n1 - p1 * n0, n0, n1, n2])
-        return (self._axes @ v) * self.chain.moved_mask[link]
-
-
-class _Boxes:
-    """Oriented boxes and bounding spheres of a set of parts, in the world.
-
-    Arrays have leading dimensions (..., k) for k parts: centres (3,), axes
-    (3, 3), half extents (3,), world-aligned half extents (3,), sphere
-    centres (3,) and radii.
-    """
-
-    __slots__ = ("frames", "c", "r", "h", "aabb", "s", "radius", "points")
-
-    def __init__(self, frames, parts: list[Part], local=None):
-        if local is None:
-            local = _local_boxes(parts)
-        center, rot, half, sphere, radius, self.points = local
-        self.frames = frames
-        self.c, self.r = obb.world(frames, center, rot)
-        self.h = half
-        self.aabb = obb.aabb_half(self.r, half)
-        rf = frames[..., :3, :3]
-        self.s = np.einsum("...ij,...j->...i", rf, sphere) + frames[..., :3, 3]
-        self.radius = radius
-
-
-def _local_boxes(parts: list[Part]):
-    return (np.array([p.obb_center for p in parts]).reshape(-1, 3),
-            np.array([p.obb_rot for p in parts]).reshape(-1, 3, 3),
-            np.array([p.obb_half for p in parts]).reshape(-1, 3),
-            np.array([p.shape.center for p in parts]).reshape(-1, 3),
-            np.array([p.shape.radius for p in parts]),
-            obb.padded([p.hull for p in parts]))
-
-
-def _screen(activation, a: _Boxes, ia: tuple, pa, b: _Boxes, ib: tuple, pb_) -> np.ndarray:
-    """Which candidate pairs may be within `activation`: oriented boxes, then hulls.
-
-    `ia`, `ib` index the boxes' arrays (sample and part indices, or part
-    indices alone for unbatched sets); `pa`, `pb_` the part indices.
-    """
-    keep = obb.gaps(a.c[ia], a.r[ia], a.h[pa], b.c[ib], b.r[ib], b.h[pb_]) <= activation
-    if keep.sum() < HULL_SCREEN:
-        return keep
-    sub_a = tuple(i[keep] for i in ia)
-    sub_b = tuple(i[keep] for i in ib)
-    keep[keep] = obb.hull_gaps(a.frames[sub_a], a.points[pa[keep]], a.r[sub_a],
-                               b.frames[sub_b], b.points[pb_[keep]], b.r[sub_b],
-                               a.c[sub_a], b.c[sub_b]) <= activation
-    return keep
-
-
-def _near(a_c, a_aabb, a_s, a_radius, b_c, b_aabb, b_s, b_radius) -> np.ndarray:
-    """Lower bounds (broadcast shape) from world-aligned boxes and spheres: the larger."""
-    apart = np.abs(a_c - b_c) - a_aabb - b_aabb
-    box = np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=-1))
-    sphere = np.linalg.norm(a_s - b_s, axis=-1) - a_radius - b_radius
-    return np.maximum(box, sphere)
-
-
-class _Batch:
-    """The narrow phase of one `distances_many` call, run group by group of pairs.
-
-    FCL answers each pair; the check of its answer (the gap of the two
-    solids' projections on its normal, narrow.py) and the joint gradients are
-    then computed for the whole group at once. Pairs whose check fails, or
-    with a curved solid, take narrow.py's scalar path.
-    """
-
-    def __init__(self, checker, queries, frames, activation):
-        self.checker = checker
-        self.queries = queries
-        self.frames = frames
-        self.activation = activation
-        self.out: list[list[Contact]] = [[] for _ in queries]
-        self._basis = None
-
-    def basis(self) -> np.ndarray:
-        """(S, n, 6) gradient bases of all samples (chain.normal_gradient_basis)."""
-        if self._basis is None:
-            self._basis = self.checker.world.chain.normal_gradient_basis_batch(self.frames)
-        return self._basis
-
-    def narrow(self, samples, sides_a, sides_b, geom_a, geom_b) -> None:
-        """Contacts of pairs (samples[t], sides_a[t], sides_b[t]) within activation.
-
-        A side is (cache key, part, owner pose or None for a link); a geometry
-        is (owner frames (k, 4, 4), hull points (k, V, 3), exact (k,), moving
-        chain link (k,) or None when that side does not move with q).
-        """
-        k = len(sides_a)
-        if k == 0:
-            return
-        if k <= SCALAR_PAIRS:
-            self._scalar(samples.tolist(), sides_a, sides_b, geom_a[3], geom_b[3])
-            return
-        request = self.checker._request
-        dist = np.empty(k)
-        p1 = np.zeros((k, 3))
-        p2 = np.zeros((k, 3))
-        raws, placed = [], []
-        closed = np.zeros(k, dtype=bool)  # answered exactly by prism.py
-        samples = samples.tolist()
-        for t, (s, (key_a, pa, pose_a), (key_b, pb_, pose_b)) in enumerate(
-                zip(samples, sides_a, sides_b, strict=True)):
-            query = self.queries[s]
-            a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
-            placed.append((a, b))
-            if pa.shape.kind == "cylinder" or pb_.shape.kind == "cylinder":
-                exact = prism.distance(a, b)
-                if exact is not None:
-                    raws.append(exact)
-                    closed[t] = True
-                    dist[t], p1[t], p2[t], _ = exact
-                    continue
-            raw = fcl_distance(request, a, pa.obj, b, pb_.obj)
-            raws.append(raw)
-            if raw is None:
-                dist[t] = -math.inf
-            else:
-                dist[t], p1[t], p2[t] = raw
-        diff = p2 - p1
-        norm = np.linalg.norm(diff, axis=1)
-        quick = (dist > TOLERANCE) & (norm > 1e-12) & geom_a[2] & geom_b[2] & ~closed
-        normal = np.divide(diff, norm[:, None], out=np.zeros_like(diff),
-                           where=norm[:, None] > 1e-12)
-        for t in np.nonzero(closed)[0].tolist():
-            normal[t] = raws[t][3]
-        if quick.any():
-            u = normal[quick][:, None, :]
-            gap = obb.reach(geom_a[0][quick], geom_a[1][quick], u)[:, 0] + obb.reach(
-                geom_b[0][quick], geom_b[1][quick], -u)[:, 0]
-            quick[quick] = dist[quick] + gap <= TOLERANCE
-        for t in np.nonzero(~quick & ~closed)[0].tolist():
-            dist[t], p1[t], p2[t], normal[t] = checked(raws[t], *placed[t])
-        within = dist <= self.activation
-        if not within.any():
-            return
-        grad = np.zeros((k, self.checker.n))
-        chain = self.checker.world.chain
-        for sign, geom, point in ((-1.0, geom_a, p1), (1.0, geom_b, p2)):
-            moves = geom[3]
-            if moves is None:
-                continue
-            v = np.concatenate([transforms.cross(point, normal), normal], axis=1)
-            g = np.einsum("kij,kj->ki", self.basis()[samples], v)
-            grad += sign * g * chain.moved_mask[moves]
-        for t in np.nonzero(within)[0].tolist():
-            self.out[samples[t]].append(Contact(sides_a[t][1].owner, sides_b[t][1].owner,
-                                                float(dist[t]), p1[t], p2[t], normal[t],
-                                                grad[t]))
-
-    def _scalar(self, samples, sides_a, sides_b, moves_a, moves_b) -> None:
-        """`narrow` pair by pair: cheaper than array set-up for a handful of pairs."""
-        checker = self.checker
-        request = checker._request
-        for t, (s, (key_a, pa, pose_a), (key_b, pb_, pose_b)) in enumerate(
-                zip(samples, sides_a, sides_b, strict=True)):
-            query = self.queries[s]
-            a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
-            d, p1, p2, n = signed_distance(request, a, pa.obj, b, pb_.obj)
-            if d > self.activation:
-                continue
-            grad = np.zeros(checker.n)
-            if moves_a is not None:
-                grad -= query.normal_gradient(int(moves_a[t]), p1, n)
-            if moves_b is not None:
-                grad += query.normal_gradient(int(moves_b[t]), p2, n)
-            self.out[s].append(Contact(pa.owner, pb_.owner, d, p1, p2, n, grad))
+__all__ = ["CollisionChecker", "Contact", "SELF_MARGIN"]
 
 
 class CollisionChecker:
@@ -303,13 +88,13 @@ class CollisionChecker:
         for j, (name, _, _) in enumerate(self._flat):
             self._flat_of.setdefault(name, []).append(j)
         self._link_index = np.array([p.link for p in self.link_parts], dtype=int)
-        self._link_local = _local_boxes(self.link_parts)
+        self._link_local = local_boxes(self.link_parts)
         # Polytopes (meshes, boxes): their hull points give exact support values.
         self._exact_link = np.array([p.shape.vertices is not None for p in self.link_parts],
                                     dtype=bool)
         self._exact_body = np.array([p.shape.vertices is not None for _, _, p in self._flat],
                                     dtype=bool)
-        self._body_local = _local_boxes([p for _, _, p in self._flat])
+        self._body_local = local_boxes([p for _, _, p in self._flat])
         self._body_start = self._body_boxes(self._start)
         self._static_placed = {
             ("body", name, k): Placed(part.shape, self._start[name] @ part.shape.local)
@@ -332,7 +117,7 @@ class CollisionChecker:
         chain = self.world.chain
         parent_group = {i: self.group[link.parent] for i, link in enumerate(chain.links)
                         if link.q_index >= 0}
-        query = _Query(chain, chain.fk_list(self._default_configuration()), {})
+        query = Query(chain, chain.fk_list(self._default_configuration()), {})
         pairs = []
         for ia, pa in enumerate(self.link_parts):
             for ib in range(ia + 1, len(self.link_parts)):
@@ -403,11 +188,11 @@ class CollisionChecker:
             moved = [frozenset()] * n_samples  # the shared cache holds this one state
             bodies = self._start_or_moved(body_poses, poses[0])
             shared = self._shared_placed(body_poses)
-        queries = [_Query(chain, frames[s], shared) for s in range(n_samples)]
-        batch = _Batch(self, queries, frames, activation)
+        queries = [Query(chain, frames[s], shared) for s in range(n_samples)]
+        batch = Batch(self, queries, frames, activation)
         usable, columns = self._masks(ignores, [h[0] if h else None for h in helds])
         parts = self.link_parts
-        links = _Boxes(frames[:, self._link_index], parts, self._link_local)
+        links = Boxes(frames[:, self._link_index], parts, self._link_local)
         link_moves = self._link_index
 
         def body_side(s, j):
@@ -419,12 +204,12 @@ class CollisionChecker:
             return s_ if per_row else np.zeros_like(s_)
 
         # Robot links vs bodies.
-        near = _near(links.c[:, :, None], links.aabb[:, :, None], links.s[:, :, None],
-                     links.radius[None, :, None], bodies.c[:, None], bodies.aabb[:, None],
-                     bodies.s[:, None], bodies.radius) <= activation
+        near = broad_gaps(links.c[:, :, None], links.aabb[:, :, None], links.s[:, :, None],
+                          links.radius[None, :, None], bodies.c[:, None], bodies.aabb[:, None],
+                          bodies.s[:, None], bodies.radius) <= activation
         near &= self._covered[bool(static)] & usable[:, :, None] & columns[:, None, :]
         s_, i_, j_ = np.nonzero(near)
-        keep = _screen(activation, links, (s_, i_), i_, bodies, (body_index(s_), j_), j_)
+        keep = screen(activation, links, (s_, i_), i_, bodies, (body_index(s_), j_), j_)
         s_, i_, j_ = s_[keep], i_[keep], j_[keep]
         batch.narrow(s_, [(i, parts[i], None) for i in i_.tolist()],
                      [body_side(s, j) for s, j in zip(s_.tolist(), j_.tolist(), strict=True)],
@@ -439,12 +224,12 @@ class CollisionChecker:
                              body_side, columns, usable)
         if len(self._self_a):
             ia, ib = self._self_a, self._self_b
-            gap = _near(links.c[:, ia], links.aabb[:, ia], links.s[:, ia], links.radius[ia],
-                        links.c[:, ib], links.aabb[:, ib], links.s[:, ib], links.radius[ib])
+            gap = broad_gaps(links.c[:, ia], links.aabb[:, ia], links.s[:, ia], links.radius[ia],
+                             links.c[:, ib], links.aabb[:, ib], links.s[:, ib], links.radius[ib])
             near = (gap <= activation) & usable[:, ia] & usable[:, ib]
             s_, k_ = np.nonzero(near)
             a_, b_ = ia[k_], ib[k_]
-            keep = _screen(activation, links, (s_, a_), a_, links, (s_, b_), b_)
+            keep = screen(activation, links, (s_, a_), a_, links, (s_, b_), b_)
             s_, a_, b_ = s_[keep], a_[keep], b_[keep]
             batch.narrow(s_, [(a, parts[a], None) for a in a_.tolist()],
                          [(b, parts[b], None) for b in b_.tolist()],
@@ -461,17 +246,17 @@ class CollisionChecker:
         activation = batch.activation
         held_poses = frames[rows, self._tool] @ grasps  # (G, 4, 4)
         parts = self._held(name)
-        boxes = _Boxes(held_poses[:, None], parts)  # (G, H, ...)
+        boxes = Boxes(held_poses[:, None], parts)  # (G, H, ...)
         exact = np.array([p.shape.vertices is not None for p in parts], dtype=bool)
         tool = np.full(len(parts), self._tool)
         # Vs bodies (per row when each row has its own world state).
         b = bodies
         brow = rows if per_row else np.zeros(len(rows), dtype=int)
-        gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
-                    boxes.radius[None, :, None], b.c[brow][:, None], b.aabb[brow][:, None],
-                    b.s[brow][:, None], b.radius)
+        gap = broad_gaps(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
+                         boxes.radius[None, :, None], b.c[brow][:, None], b.aabb[brow][:, None],
+                         b.s[brow][:, None], b.radius)
         g_, h_, j_ = np.nonzero((gap <= activation) & columns[rows][:, None, :])
-        keep = _screen(activation, boxes, (g_, h_), h_, b, (brow[g_], j_), j_)
+        keep = screen(activation, boxes, (g_, h_), h_, b, (brow[g_], j_), j_)
         g_, h_, j_ = g_[keep], h_[keep], j_[keep]
         s_ = rows[g_]
         batch.narrow(s_, [(("held", h), parts[h], held_poses[g])
@@ -480,12 +265,12 @@ class CollisionChecker:
                      (boxes.frames[g_, h_], boxes.points[h_], exact[h_], tool[h_]),
                      (b.frames[brow[g_], j_], b.points[j_], self._exact_body[j_], None))
         # Vs links.
-        gap = _near(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
-                    boxes.radius[None, :, None], links.c[rows][:, None],
-                    links.aabb[rows][:, None], links.s[rows][:, None], links.radius)
+        gap = broad_gaps(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
+                         boxes.radius[None, :, None], links.c[rows][:, None],
+                         links.aabb[rows][:, None], links.s[rows][:, None], links.radius)
         mask = (usable & ~self._in_tool_group)[rows]
         g_, h_, j_ = np.nonzero((gap <= activation) & mask[:, None, :])
-        keep = _screen(activation, boxes, (g_, h_), h_, links, (rows[g_], j_), j_)
+        keep = screen(activation, boxes, (g_, h_), h_, links, (rows[g_], j_), j_)
         g_, h_, j_ = g_[keep], h_[keep], j_[keep]
         s_ = rows[g_]
         batch.narrow(s_, [(("held", h), parts[h], held_poses[g])
@@ -579,22 +364,22 @@ class CollisionChecker:
 
     # ------------------------------------------------------------ internals
 
-    def _body_boxes(self, poses) -> _Boxes:
+    def _body_boxes(self, poses) -> Boxes:
         """Boxes of all body parts in one world state, with a leading row axis of 1."""
         frames = np.array([poses[name] for name, _, _ in self._flat]).reshape(1, -1, 4, 4)
-        return _Boxes(frames, [p for _, _, p in self._flat], self._body_local)
+        return Boxes(frames, [p for _, _, p in self._flat], self._body_local)
 
-    def _body_boxes_rows(self, poses: list[dict], moved: list[frozenset]) -> _Boxes:
+    def _body_boxes_rows(self, poses: list[dict], moved: list[frozenset]) -> Boxes:
         """Boxes of all body parts in each row's world state: leading axis S."""
         if not any(moved):
-            return _Boxes(np.broadcast_to(self._body_start.frames,
+            return Boxes(np.broadcast_to(self._body_start.frames,
                                           (len(poses), *self._body_start.frames.shape[1:])),
                           [p for _, _, p in self._flat], self._body_local)
         frames = np.array([[p[name] for name, _, _ in self._flat] for p in poses])
-        return _Boxes(frames.reshape(len(poses), -1, 4, 4), [p for _, _, p in self._flat],
+        return Boxes(frames.reshape(len(poses), -1, 4, 4), [p for _, _, p in self._flat],
                       self._body_local)
 
-    def _start_or_moved(self, body_poses, poses) -> _Boxes:
+    def _start_or_moved(self, body_poses, poses) -> Boxes:
         if not body_poses or not any(name in self._flat_of for name in body_poses):
             return self._body_start
         return self._body_boxes(poses)
@@ -604,9 +389,9 @@ class CollisionChecker:
             return dict(self._static_placed)
         return {key: v for key, v in self._static_placed.items() if key[1] not in body_poses}
 
-    def _query(self, q, body_poses) -> _Query:
+    def _query(self, q, body_poses) -> Query:
         chain = self.world.chain
-        return _Query(chain, chain.fk_list(np.asarray(q, dtype=float)),
+        return Query(chain, chain.fk_list(np.asarray(q, dtype=float)),
                       self._shared_placed(body_poses))
 
     def _held_pose(self, frames, held):
