@@ -80,16 +80,24 @@ def _summary(sol, ui, args) -> None:
                     f"{len(sol.trajectory)} waypoints")
     else:
         ui.error(f"{sol.status}: {sol.reason}")
-    if sol.skeletons:
-        table = Table(title="skeletons")
-        for col in ("#", "plan", "sym", "bound", "stage", "outcome", "nlp cost", "s"):
-            table.add_column(col)
-        for s in sol.skeletons:
-            table.add_row(str(s.rank), _short(s.plan), f"{s.symbolic_cost:g}",
-                          _fmt(s.bound) + (" (h)" if s.bound_kind == "heuristic" else ""),
-                          s.stage or "-", s.outcome, _fmt(s.nlp_cost), f"{s.seconds:.2f}")
-        if not ui.quiet:
+    if sol.skeletons and not ui.quiet:
+        rows = [(str(s.rank), _short(s.plan), f"{s.symbolic_cost:g}",
+                 _fmt(s.bound) + (" (h)" if s.bound_kind == "heuristic" else ""),
+                 s.stage or "-", s.outcome, _fmt(s.nlp_cost), f"{s.seconds:.2f}")
+                for s in sol.skeletons]
+        if ui.err.is_terminal:
+            table = Table(title="skeletons")
+            for col in ("#", "plan", "sym", "bound", "stage", "outcome", "nlp cost", "s"):
+                table.add_column(col)
+            for row in rows:
+                table.add_row(*row)
             ui.err.print(table)
+        else:
+            # Piped: one plain line per skeleton, easy to grep.
+            for rank, plan, sym, bound, stage, outcome, cost, secs in rows:
+                ui.err.print(f"skeleton #{rank}: {outcome} at {stage}, symbolic cost {sym}, "
+                             f"bound {bound}, nlp cost {cost}, {secs} s: {plan}",
+                             markup=False, highlight=False)
     ui.info("time: " + ", ".join(f"{k} {v:.2f}s" for k, v in seconds.items())
             + f"; skeletons {stats.get('skeletons_generated', 0)} generated, "
             f"{stats.get('skeletons_optimized', 0)} optimized, "

@@ -25,6 +25,7 @@ from tampcli.optimize.path import phase_rows_fn, sample_clearance, via_points
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import STAGES, TrajectoryResult
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
+from tampcli.optimize.world_state import reach_of
 
 GRIP_BOUND = 4 * math.pi
 LAZY_BAND = 0.01  # m: a point between waypoints this close to violating gets its rows
@@ -100,6 +101,32 @@ def _too_small(problem) -> str | None:
     return None
 
 
+def _beyond_reach(problem) -> str | None:
+    """A target region no point of which the Panda's tool can come near (proved).
+
+    The Panda's reach ball (world_state.reach_of: the stretched arm from the
+    shoulder) bounds where the tool can be; the tool holds the object inside
+    the object's bounding sphere, so a region farther from the ball than that
+    radius cannot receive it. Other arms' reach is sampled, not a bound: no
+    proof for them.
+    """
+    if problem.planar or problem.scene.robot.model != "panda":
+        return None
+    centre, reach = reach_of(problem)
+    regions = {r.name: r for r in problem.scene.regions}
+    for step in problem.steps:
+        if step.kind in ("place", "push") and step.target in regions:
+            region = regions[step.target]
+            info = problem.bodies[step.obj]
+            nearest = np.clip(centre[:2], region.lower, region.upper)
+            gap = math.hypot(*(nearest - centre[:2]), step.rest_z - centre[2])
+            slack = math.sqrt(info.half[0] ** 2 + info.half[1] ** 2 + info.half[2] ** 2)
+            if gap > reach + slack:
+                return (f"{step.name}: region {step.target} is {100 * (gap - reach):.0f} cm "
+                        f"beyond the arm's reach ({reach:.2f} m from the shoulder)")
+    return None
+
+
 def _placements(run: _Run, warm):
     """Run the final NLP; returns (outcome or None when there is nothing to place, values)."""
     problem = run.problem
@@ -115,7 +142,7 @@ def _placements(run: _Run, warm):
 
 
 def _final(run: _Run, warm) -> TrajectoryResult:
-    why = _too_small(run.problem)
+    why = _too_small(run.problem) or _beyond_reach(run.problem)
     if why:
         return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
     out, placements = _placements(run, warm)
@@ -138,7 +165,7 @@ def _shares_prefix(problem, warm) -> bool:
 
 def _keyframes(run: _Run, warm) -> TrajectoryResult:
     problem = run.problem
-    why = _too_small(problem)
+    why = _too_small(problem) or _beyond_reach(problem)
     if why:
         return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
     have = warm is not None and warm.placements and all(
