@@ -1,7 +1,9 @@
 """Geometry: scene and modes files, the PyBullet world, kinematics and collision distances.
 
-scene.py / modes.py read the files; world.py owns the simulator and the
-robot's kinematics (chain.py, ik.py); collision.py answers signed-distance
-queries with joint gradients (parts.py, shapes.py, narrow.py, gjk.py);
-report.py summarizes a scene for `tampcli check`.
+scene.py / modes.py read the files (locate.py finds them); world.py owns the
+simulator and the robot's kinematics (chain.py, ik.py); collision.py answers
+signed-distance queries with joint gradients, one configuration or a batch
+(parts.py, shapes.py; obb.py and pairs.py screen and answer the pairs of a
+batch; narrow.py, prism.py, gjk.py answer one pair); report.py summarizes a
+scene for `tampcli check`.
 """
