@@ -220,18 +220,12 @@ def branch_and_bound(
         # cost no lower (skeletons arrive in non-decreasing cost): it cannot win.
         motion = tuple(n for op, n in zip(ops, names, strict=True) if is_geometric(op))
         twin = evaluated.get(motion)
-        if twin is not None:
+        blocked = tree.blocked(names) if twin is None else None
+        if twin is not None or blocked is not None:
+            # Pruned before any NLP, by an argument that holds whatever the geometry.
             stats["skeletons_pruned"] += 1
-            why = f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
-            records.append(SkeletonRecord(rank, names, symbolic, "pruned", proved_bound,
-                                          "proved", None, None, None, 0.0, why))
-            emit(Event("outcome", rank, names, symbolic, outcome="pruned", message=why))
-            continue
-
-        blocked = tree.blocked(names)
-        if blocked is not None:
-            stats["skeletons_pruned"] += 1
-            why = f"shares the infeasible prefix {' '.join(blocked)}"
+            why = (f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
+                   if twin is not None else f"shares the infeasible prefix {' '.join(blocked)}")
             records.append(SkeletonRecord(rank, names, symbolic, "pruned", proved_bound,
                                           "proved", None, None, None, 0.0, why))
             emit(Event("outcome", rank, names, symbolic, outcome="pruned", message=why))
