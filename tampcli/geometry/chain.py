@@ -116,10 +116,11 @@ class Chain:
         qs = np.atleast_2d(np.asarray(qs, dtype=float))
         out = np.empty((len(qs), len(self.links), 4, 4))
         out[:, 0] = self.base_pose
-        for i, parent, a, b, c, kind, qi, _abc in self._plan:
+        # (1, sin q, 1 - cos q) of every joint and row at once: (T, n, 3).
+        coef = np.stack([np.ones_like(qs), np.sin(qs), 1.0 - np.cos(qs)], axis=2)
+        for i, parent, a, b, _c, kind, qi, abc in self._plan:
             if kind == REVOLUTE:
-                v = qs[:, qi, None, None]
-                local = a + np.sin(v) * b + (1.0 - np.cos(v)) * c
+                local = (coef[:, qi] @ abc).reshape(-1, 4, 4)
             elif kind == PRISMATIC:
                 local = a + qs[:, qi, None, None] * b
             else:
