@@ -75,7 +75,6 @@ class CollisionChecker:
         self.support = find_support(world, self.fixed)
         self.slides = world.scene.robot.model == "planar"  # the whole robot rests on its support
         self._static_link = np.array([self.group[p.link] == 0 for p in self.link_parts])
-        self._all_links = np.ones(len(self.link_parts), dtype=bool)
         self._in_tool_group = np.array([self.group[p.link] == self.tool_group
                                         for p in self.link_parts])
         self.self_pairs = self._self_pairs()
