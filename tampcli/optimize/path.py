@@ -60,7 +60,7 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     def block(i):
         return f"w{i}" if 0 < i < T else None
 
-    ignores = [_ignored(m, tau, T) for tau, _, _ in pts]
+    ignores = [allowed_contacts(m, tau, T) for tau, _, _ in pts]
     weights = [[(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
                 if b is not None and wgt > 0] for _, i, s in pts]
     where = np.array([i for _, i, _ in pts], dtype=int)
@@ -93,7 +93,7 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     return evaluate, layout
 
 
-def _ignored(m: MotionPhase, tau: float, T: int) -> frozenset[str]:
+def allowed_contacts(m: MotionPhase, tau: float, T: int) -> frozenset[str]:
     """What a sample at position tau of motion m may touch: what it slides along, and
     the contacts it leaves in its first segment or enters in its last."""
     ignore = set(m.sliding)
@@ -112,7 +112,7 @@ def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker,
     pts = samples(T, checks)
     samples_q = np.array([(1 - s) * qs[i] + s * qs[i + 1] for _, i, s in pts])
     contacts = checker.distances_many(samples_q, moved, held_spec(held),
-                                      [_ignored(m, tau, T) for tau, _, _ in pts], horizon)
+                                      [allowed_contacts(m, tau, T) for tau, _, _ in pts], horizon)
     return {tau: min((c.distance for c in found), default=horizon)
             for (tau, _, _), found in zip(pts, contacts, strict=True)}
 

@@ -18,6 +18,7 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.optimize.bodies import REST_TOLERANCE
+from tampcli.optimize.path import allowed_contacts
 from tampcli.optimize.problem import PUSH_STANDOFF, TrajectoryProblem
 
 PENETRATION = 1e-3  # m: deeper is a collision (FCL's own accuracy is ~1e-4)
@@ -81,18 +82,11 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
             for j in range(factor + (1 if i == n_seg - 1 else 0)):
                 s = j / factor
                 tau = i + s
-                ignore = set(m.sliding)
-                if tau < 1:
-                    ignore |= m.leave_contact
-                if tau > n_seg - 1:
-                    ignore |= m.enter_contact
-                if tau == 0 or tau == n_seg:
-                    # Keyframes: what the mode switch touches (the grasped object, the
-                    # support under a released one) is contact, not collision.
-                    ignore |= m.leave_contact if tau == 0 else m.enter_contact
                 taus.append(tau)
                 qs.append((1 - s) * a + s * b)
-                ignores.append(frozenset(ignore))
+                # The keyframes and the segments next to them may touch what the mode
+                # switch touches (the grasped object, the support under a released one).
+                ignores.append(allowed_contacts(m, tau, n_seg))
         worst = None
         for tau, found in zip(taus, checker.distances_many(np.array(qs), others, held, ignores,
                                                            0.0), strict=True):
