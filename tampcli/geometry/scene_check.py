@@ -1,8 +1,10 @@
-"""A Scene against its PDDL problem and modes: names, obstacles, missing geometry."""
+"""A Scene against its PDDL problem and modes: names, obstacles, missing geometry, and
+whether a URDF file is one (checked before PyBullet, which says too little)."""
 
 from __future__ import annotations
 
 import dataclasses
+from xml.etree import ElementTree
 
 from tampcli.errors import SceneError, source_line_at
 from tampcli.geometry.model import Body, Scene
@@ -124,3 +126,21 @@ def _is_subtype(t: str, wanted: tuple[str, ...], parents) -> bool:
         seen.add(cur)
         stack.extend(parents.get(cur, ()))
     return False
+
+
+def urdf_problem(path: str) -> str | None:
+    """Why `path` is no URDF file (not XML, or its root is not <robot>), or None.
+
+    Checked before PyBullet, which prints its parser's complaint on the
+    C-level stdout and raises only "Cannot load URDF file".
+    """
+    try:
+        root = ElementTree.parse(path).getroot()
+    except ElementTree.ParseError as e:
+        line, column = e.position
+        return f"{path}:{line}:{column + 1}: not a URDF file: XML {str(e).split(':')[0]}"
+    except OSError as e:
+        return f"cannot read {path}: {e.strerror}"
+    if root.tag != "robot":
+        return f"{path}: not a URDF file: its root element is <{root.tag}>, not <robot>"
+    return None

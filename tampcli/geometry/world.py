@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import math
 from pathlib import Path
-from xml.etree import ElementTree
 
 import numpy as np
 
@@ -19,7 +18,7 @@ from tampcli.geometry import transforms
 from tampcli.geometry.chain import REVOLUTE, Chain, measure_chain
 from tampcli.geometry.ik import solve_ik
 from tampcli.geometry.scene import PANDA_READY, Body, Scene
-from tampcli.geometry.scene_check import body_error, entry_error
+from tampcli.geometry.scene_check import body_error, entry_error, urdf_problem
 from tampcli.geometry.shapes import mesh_hulls
 
 
@@ -396,24 +395,6 @@ class World:
 
     def pb_body(self, name: str) -> int:
         return self._bodies[name]
-
-
-def urdf_problem(path: str) -> str | None:
-    """Why `path` is no URDF file (not XML, or its root is not <robot>), or None.
-
-    Checked before PyBullet, which prints its parser's complaint on the
-    C-level stdout and raises only "Cannot load URDF file".
-    """
-    try:
-        root = ElementTree.parse(path).getroot()
-    except ElementTree.ParseError as e:
-        line, column = e.position
-        return f"{path}:{line}:{column + 1}: not a URDF file: XML {str(e).split(':')[0]}"
-    except OSError as e:
-        return f"cannot read {path}: {e.strerror}"
-    if root.tag != "robot":
-        return f"{path}: not a URDF file: its root element is <{root.tag}>, not <robot>"
-    return None
 
 
 def _pb_names_to_q(pb, client, uid, pb_joints) -> dict[str, int]:
