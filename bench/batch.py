@@ -25,7 +25,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
-IPC = ROOT.parent / "shared" / "benchmarks" / "ipc"
+IPC = ROOT / "benchmarks" / "ipc"
 OUT = Path(__file__).parent / "results" / "batch.md"
 SUITE = ("gripper", "blocks", "logistics00", "miconic", "driverlog", "rovers", "satellite",
          "visitall-opt11-strips", "elevators-opt08-strips", "miconic-fulladl")

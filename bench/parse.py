@@ -1,6 +1,6 @@
 """Parse speed: ours vs the `pddl` package (0.5.1) vs Fast Downward's translator, per IPC file.
 
-Every file of /work/shared/benchmarks/ipc is parsed by the three, interleaved,
+Every file of benchmarks/ipc is parsed by the three, interleaved,
 in one run; time is CPU time of this process (`time.process_time`, robust to
 the other jobs sharing the machine), the best of a few repeats for small
 files. The `pddl` package parses a file alone (a problem without its domain)
@@ -30,7 +30,7 @@ sys.path.insert(0, str(ROOT))
 
 from tampcli.pddl import parser as ours  # noqa: E402
 
-IPC = ROOT.parent / "shared" / "benchmarks" / "ipc"
+IPC = ROOT / "benchmarks" / "ipc"
 SMALL = 100_000  # bytes: files below are timed as the best of REPEATS runs
 REPEATS = 3
 

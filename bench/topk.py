@@ -26,7 +26,7 @@ from tampcli.pddl import parser
 from tampcli.search.topk import TopK
 from tampcli.task.ground import ground
 
-IPC = Path(__file__).resolve().parents[2] / "shared" / "benchmarks" / "ipc"
+IPC = Path(__file__).resolve().parents[1] / "benchmarks" / "ipc"
 OUT = Path(__file__).parent / "results" / "topk.md"
 PROBLEMS = [("gripper", "prob01"), ("blocks", "probBLOCKS-4-0"),
             ("logistics00", "probLOGISTICS-4-0"), ("elevators-opt08-strips", "p01")]

@@ -8,7 +8,7 @@ from tampcli.cli import main
 from tampcli.cli.ui import UI
 
 ROOT = Path(__file__).resolve().parent.parent
-IPC = ROOT.parent / "shared" / "benchmarks" / "ipc"
+IPC = ROOT / "benchmarks" / "ipc"
 
 
 class Run:

@@ -6,7 +6,7 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-IPC = ROOT.parent / "shared" / "benchmarks" / "ipc"
+IPC = ROOT / "benchmarks" / "ipc"
 GRIPPER_DOMAIN = IPC / "gripper" / "domain.pddl"
 GRIPPER_P01 = IPC / "gripper" / "prob01.pddl"
 # Hard enough that `plan` cannot finish it within a second, even on a fast machine.

@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-IPC = Path(__file__).resolve().parents[3] / "shared" / "benchmarks" / "ipc"
+IPC = Path(__file__).resolve().parents[2] / "benchmarks" / "ipc"
 
 
 def natural(name: str):

@@ -15,7 +15,7 @@ from tampcli.task.ground import ground
 
 INF = float("inf")
 ROOT = Path(__file__).resolve().parents[2]
-IPC = ROOT.parent / "shared" / "benchmarks" / "ipc"
+IPC = ROOT / "benchmarks" / "ipc"
 
 
 def task_of(domain: Path, problem: Path):

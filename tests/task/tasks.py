@@ -7,7 +7,7 @@ from pathlib import Path
 from tampcli.pddl import parser
 from tampcli.task.ground import ground
 
-IPC = Path(__file__).resolve().parents[3] / "shared" / "benchmarks" / "ipc"
+IPC = Path(__file__).resolve().parents[2] / "benchmarks" / "ipc"
 
 
 def make_task(domain: str, problem: str):
