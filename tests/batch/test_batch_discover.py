@@ -21,7 +21,7 @@ def test_psr_small_problem_finds_its_numbered_domain_by_prefix():
 
 
 def test_every_psr_small_and_parcprinter_problem_gets_its_own_domain():
-    for name, count in (("psr-small", 50), ("parcprinter-08-strips", 30)):
+    for name, count in (("psr-small", 15), ("parcprinter-08-strips", 15)):
         jobs = discover([str(IPC / name)])
         assert len(jobs) == count
         for job in jobs:
