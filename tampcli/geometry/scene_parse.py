@@ -20,6 +20,7 @@ from tampcli.geometry.model import (
     RobotSpec,
     Scene,
 )
+from tampcli.geometry.region_check import is_upright, region_overhang
 from tampcli.geometry.tomlsrc import TomlSource
 
 _ROBOT_KEYS = ("model", "base", "start", "radius", "height", "urdf", "tool_link", "joints")
@@ -69,6 +70,17 @@ def build_scene(src: TomlSource) -> Scene:
         if support.shape not in ("box", "cylinder"):
             raise src.error(f"region {r.name!r} must lie on a box or cylinder, {r.on!r} is a "
                             f"{support.shape}", "regions", i, "on", "regions.on")
+        if not is_upright(support):
+            raise src.error(f"region {r.name!r} is on {r.on!r}, which is not upright: its top "
+                            "face must be horizontal to hold a region", "regions", i, "on",
+                            f"regions.{r.name}")
+        off = region_overhang(r, support)
+        if off is not None:
+            (x, y) = off[1]
+            raise src.error(f"region {r.name!r} is not inside the top face of {r.on!r}: its "
+                            f"corner ({x:.3f}, {y:.3f}) lies {off[0] * 100:.1f} cm off it "
+                            "(expected a rectangle within the support's top face)",
+                            "regions", i, "center", f"regions.{r.name}")
     camera = _camera(src, data["camera"]) if "camera" in data else None
     return Scene(src.path, robot, bodies, regions, camera)
 
