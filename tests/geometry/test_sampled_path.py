@@ -1,0 +1,104 @@
+"""Sampled paths through narrow passages, checked with the collision model at fine steps."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tampcli.geometry.collision import CollisionChecker
+from tampcli.geometry.sampled_path import SamplingOptions, resample, sampled_path
+from tampcli.geometry.scene import RobotSpec, Scene
+from tampcli.geometry.world import World
+
+from .worlds import IDENTITY, box
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _corridor_scene(gap: float) -> Scene:
+    """A wall across the floor at x = 0 with one slot of width `gap` at y = 0.3."""
+    lo, hi = 0.3 - 0.5 * gap, 0.3 + 0.5 * gap  # the wall spans the floor, y -1 .. 1
+    bodies = (
+        box("floor", (2.0, 2.0, 0.02), (0.0, 0.0, -0.01)),
+        box("wall_low", (0.1, lo + 1.0, 0.1), (0.0, (lo - 1.0) / 2, 0.05)),
+        box("wall_high", (0.1, 1.0 - hi, 0.1), (0.0, (1.0 + hi) / 2, 0.05)),
+    )
+    return Scene(None, RobotSpec("planar", base=(-0.5, -0.5, 0.025) + IDENTITY, radius=0.05),
+                 bodies)
+
+
+def _fine_min_distance(checker, path, steps=20):
+    qs = np.concatenate([np.linspace(a, b, steps, endpoint=False) for a, b in zip(path[:-1], path[1:], strict=True)]
+                        + [path[-1:]])
+    return min(checker.min_distance(q, static=False) for q in qs)
+
+
+@pytest.mark.parametrize("gap", [
+    0.14,
+    # 5 mm and 2 mm a side: RRT-Connect's time there is heavy-tailed (seconds to a minute)
+    pytest.param(0.11, marks=pytest.mark.slow),
+    pytest.param(0.104, marks=pytest.mark.slow),
+])
+def test_a_disk_goes_through_a_slot_with_millimetres_to_spare(gap):
+    with World(_corridor_scene(gap)) as world:
+        checker = CollisionChecker(world)
+        start, goal = np.array([-0.5, -0.5]), np.array([0.5, -0.5])
+        assert checker.min_distance((start + goal) / 2, static=False) < 0  # the straight line hits
+        path = sampled_path(checker, start, goal, world.lower, world.upper,
+                            options=SamplingOptions(time_limit=120.0, endpoint_slack=0.0))
+        assert path is not None
+        np.testing.assert_allclose(path[[0, -1]], [start, goal])
+        assert _fine_min_distance(checker, path) >= -2e-3  # edges checked every 2.8 cm
+        assert np.abs(path[:, 1] - 0.3).min() < 0.01  # it went through the slot
+
+
+def test_no_path_when_the_slot_is_narrower_than_the_disk():
+    with World(_corridor_scene(0.09)) as world:
+        checker = CollisionChecker(world)
+        path = sampled_path(checker, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
+                            options=SamplingOptions(time_limit=0.5))
+        assert path is None
+
+
+def test_clearance_is_kept():
+    with World(_corridor_scene(0.2)) as world:
+        checker = CollisionChecker(world)
+        path = sampled_path(checker, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
+                            options=SamplingOptions(time_limit=30.0, clearance=0.02,
+                                                    endpoint_slack=0.0))
+        assert path is not None
+        assert _fine_min_distance(checker, path) >= 0.02 - 2e-3
+
+
+def test_resample_spaces_waypoints_evenly_along_the_path():
+    path = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 3.0]])
+    out = resample(path, 5)
+    np.testing.assert_allclose(out, [[0, 0], [1, 0], [1, 1], [1, 2], [1, 3]])
+    assert len(resample(np.zeros((2, 3)), 4)) == 4
+
+
+def test_bad_options_are_refused():
+    with pytest.raises(ValueError):
+        SamplingOptions(resolution=0.0)
+    with pytest.raises(ValueError):
+        SamplingOptions(clearance=-1.0)
+
+
+def test_nothing_reaches_the_terminal_not_even_at_exit():
+    # OMPL logs by default, and nanobind reports objects alive at interpreter exit.
+    script = (
+        "from tests.geometry.test_sampled_path import _corridor_scene, sampled_path\n"
+        "from tampcli.geometry.world import World\n"
+        "from tampcli.geometry.collision import CollisionChecker\n"
+        "with World(_corridor_scene(0.2)) as w:\n"
+        "    c = CollisionChecker(w)\n"
+        "    assert sampled_path(c, [-0.5, -0.5], [0.5, -0.5], w.lower, w.upper) is not None\n"
+        "    assert sampled_path(c, [-0.5, -0.5], [0.5, -0.5], w.lower, w.upper,\n"
+        "                        options=SamplingOptions(time_limit=0.05, clearance=0.5)) is None\n"
+    ).replace("sampled_path\n", "sampled_path, SamplingOptions\n", 1)
+    run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                         cwd=ROOT, timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout == "" and run.stderr == ""
