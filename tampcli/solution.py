@@ -2,7 +2,7 @@
 and `validate` read back.
 
 `Solution` is plain data (no numpy) so it can cross process boundaries (batch)
-and be written exactly as SPEC.md lays it out. `read` checks every required
+and be written exactly as docs/formats.md lays it out. `read` checks every required
 key and points at the one that is missing or malformed.
 """
 

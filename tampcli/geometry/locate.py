@@ -1,4 +1,4 @@
-"""Where a problem's geometry lives, by convention (SPEC: files are found beside the
+"""Where a problem's geometry lives, by convention (docs/formats.md: files are found beside the
 PDDL). Path checks only: a symbolic solve asks this without loading numpy."""
 
 from __future__ import annotations

@@ -1,4 +1,4 @@
-"""modes.toml -> Modes: what each action schema does to the world (SPEC.md, "modes.toml").
+"""modes.toml -> Modes: what each action schema does to the world (docs/formats.md, "modes.toml").
 
 Values starting with `?` name parameters of the action; they are checked
 against the action's parameter list and kept as names, with their index in

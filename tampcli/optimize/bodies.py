@@ -14,7 +14,7 @@ import numpy as np
 
 from tampcli.geometry import transforms
 
-# Resting contact tolerance (SPEC: "its bottom rests on that face (within 5 mm)").
+# Resting contact tolerance (docs/formats.md, "Resting contact"): bottom to top face.
 REST_TOLERANCE = 0.005
 
 

@@ -244,7 +244,7 @@ class _Op:
 
 
 def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]:
-    """`verify` on a solution.json (scene and modes found as SPEC.md says).
+    """`verify` on a solution.json (scene and modes found as docs/formats.md says).
 
     `domain_path` / `problem_path` override the files the solution names; each
     may also be an already parsed `ast.Domain` / `ast.Problem`.

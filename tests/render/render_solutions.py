@@ -1,5 +1,5 @@
 """Hand-made solutions for the render tests: real scenes, real IK, joint-space
-interpolation, phases and object poses laid out as SPEC.md says."""
+interpolation, phases and object poses laid out as docs/formats.md says."""
 
 from __future__ import annotations
 
