@@ -26,7 +26,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-
 _FIRST_SLICE = 0.25  # s: RRT-Connect's first run before a restart
 
 
