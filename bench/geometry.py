@@ -51,9 +51,15 @@ def timed(fn, repeat: int) -> float:
     return best
 
 
+def _pybullet(world):
+    """The World's private PyBullet client: PyBullet's own FK and distances are the
+    peer these numbers are measured against."""
+    return world._pb, world._client, world._robot
+
+
 def bench_fk(world, qs, repeat):
     chain = world.chain
-    pb, client, robot = world.pb, world.client, world.robot_id
+    pb, client, robot = _pybullet(world)
     links = [link.pb_index for link in chain.links[1:]]
     joints = world._pb_joints
     it = iter(range(10**9))
@@ -119,8 +125,8 @@ def bench_pairs(world, checker, pairs):
         for a, oa, b, ob in placed:
             signed_distance(request, a, oa, b, ob)
 
-    pb, client, robot = world.pb, world.client, world.robot_id
-    by_config_pb = [(q, [(world.chain.links[lp.link].pb_index, world.pb_body(bp.body))
+    pb, client, robot = _pybullet(world)
+    by_config_pb = [(q, [(world.chain.links[lp.link].pb_index, world._bodies[bp.body])
                          for lp, bp in items]) for q, items in by_config.values()]
 
     def peer():
@@ -171,8 +177,8 @@ def bench_batched(checker, qs):
 
 def bench_whole(world, checker, qs):
     it = iter(range(10**9))
-    pb, client, robot = world.pb, world.client, world.robot_id
-    bodies = [world.pb_body(b.name) for b in world.scene.bodies]
+    pb, client, robot = _pybullet(world)
+    bodies = [world._bodies[b.name] for b in world.scene.bodies]
 
     def ours():
         checker.distances(qs[next(it) % len(qs)], activation=0.05)

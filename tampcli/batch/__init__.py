@@ -1,7 +1,7 @@
 """Many problems -> results.jsonl: discovery, one process per problem, resume.
 
     discover.py      PATH... -> Jobs (problem + its domain, found the IPC ways)
-    child.py         the child's entry point: memory limit, test hooks, the CLI
+    child.py         the child's entry point: memory limit, test hooks, then exec of the CLI
     runner.py        one Job -> one child process -> one Result (limits enforced here)
     outcome.py       a finished child (exit status, stdout, stderr) -> Result fields
     results.py       Result and the append-only, fsynced, resumable results file

@@ -1,9 +1,11 @@
 """The entry point of one batch child: `python -m tampcli.batch.child [opts] -- ARGS`.
 
-ARGS are a `tampcli` command line (`plan|solve DOMAIN PROBLEM ...`). Before
-running it the child caps its address space (--memory-mb, RLIMIT_AS) and asks
-the kernel to kill it if the batch that started it dies (--parent PID), so a
-batch killed with SIGKILL leaves no planner running behind it.
+ARGS are a `tampcli` command line (`plan|solve DOMAIN PROBLEM ...`). The child
+caps its address space (--memory-mb, RLIMIT_AS) and asks the kernel to kill it
+if the batch that started it dies (--parent PID), so a batch killed with
+SIGKILL leaves no planner running behind it; then it becomes `python -m
+tampcli ARGS` (exec: the cap and the parent-death signal carry over). The
+batch thus runs the command line it documents, and imports nothing of it.
 
 Two hooks let tests exercise the batch against real failures; each is an
 environment variable holding a glob matched against the problem path (whole
@@ -27,14 +29,10 @@ import time
 CRASH_ENV = "TAMPCLI_BATCH_CRASH_GLOB"
 HANG_ENV = "TAMPCLI_BATCH_HANG_GLOB"
 HANG_MARKER = "tampcli-batch-hang-grandchild"
-# The exit code when the memory cap is hit (same as an internal error: the
-# runner tells them apart by the message on stderr).
-OUT_OF_MEMORY_EXIT = 70
-OUT_OF_MEMORY_MESSAGE = "error: out of memory"
 _PR_SET_PDEATHSIG = 1
 
 
-def main(argv: list[str]) -> int:
+def main(argv: list[str]) -> None:
     memory_mb, parent, args = _parse(argv)
     if parent is not None:
         _die_with_parent(parent)
@@ -48,14 +46,8 @@ def main(argv: list[str]) -> int:
         os.abort()
     if _matches(os.environ.get(HANG_ENV), problem):
         _hang(problem)
-    try:
-        from tampcli.cli import main as cli_main
-
-        return cli_main(args)
-    except MemoryError:
-        # Write without allocating much: the heap is what ran out.
-        os.write(2, f"{OUT_OF_MEMORY_MESSAGE} (limit {memory_mb} MB)\n".encode())
-        return OUT_OF_MEMORY_EXIT
+    # The same interpreter and package the batch runs (its path and environment).
+    os.execv(sys.executable, [sys.executable, "-m", "tampcli", *args])
 
 
 def _parse(argv: list[str]) -> tuple[int | None, int | None, list[str]]:
@@ -101,4 +93,4 @@ def _hang(problem: str) -> None:
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
+    main(sys.argv[1:])

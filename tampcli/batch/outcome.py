@@ -13,7 +13,6 @@ import signal
 from dataclasses import dataclass
 from typing import Any
 
-from tampcli.batch.child import OUT_OF_MEMORY_MESSAGE
 from tampcli.errors import ExitCode
 
 _STDERR_TAIL = 2000
@@ -102,10 +101,10 @@ def _last_json_object(stdout: str) -> dict[str, Any] | None:
 
 
 def _out_of_memory(stderr: str) -> bool:
-    # Only the last lines: the child's own message, or a traceback's last line
-    # (an earlier line could quote a user's file).
+    # Only the last lines: the CLI's `internal error: MemoryError` or a traceback's
+    # last line (an earlier line could quote a user's file).
     tail = stderr.strip().splitlines()[-2:]
-    return any(line.startswith(OUT_OF_MEMORY_MESSAGE) or "MemoryError" in line for line in tail)
+    return any("MemoryError" in line for line in tail)
 
 
 def _signal_message(signum: int, stderr: str, memory_mb: int | None) -> str:

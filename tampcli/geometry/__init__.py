@@ -1,6 +1,6 @@
 """Geometry: scene and modes files, the PyBullet world, kinematics and collision distances.
 
-scene.py / modes.py read the files (locate.py finds them); world.py owns the
+scene.py / modes.py read the files (locate.py finds them); world/ owns the
 simulator and the robot's kinematics (chain.py, ik.py); collision.py answers
 signed-distance queries with joint gradients, one configuration or a batch
 (parts.py, shapes.py; obb.py and pairs.py screen and answer the pairs of a

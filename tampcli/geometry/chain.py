@@ -1,13 +1,11 @@
 """A kinematic tree in numpy: forward kinematics and point Jacobians.
 
-Built once from a body loaded in PyBullet (any URDF or multibody), then
-evaluated without touching the simulator: thousands of FK calls per NLP
+Measured once by the World from the robot it loaded (any URDF or multibody),
+then evaluated without touching the simulator: thousands of FK calls per NLP
 would otherwise each pay resetJointState + getLinkState.
 
 Link frames are URDF link frames (PyBullet's getLinkState[4:6]), not the
-centre-of-mass frames. The joint origins and axes are measured from the
-simulator at init (PyBullet moves origins into inertial frames, so reading
-its joint info directly would need that bookkeeping).
+centre-of-mass frames. Joint types use PyBullet's codes.
 """
 
 from __future__ import annotations
@@ -212,84 +210,3 @@ def _axis_angle(axis, angle: float) -> np.ndarray:
     c, s = math.cos(angle), math.sin(angle)
     k = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
     return np.eye(3) + s * k + (1.0 - c) * (k @ k)
-
-
-def measure_chain(pb, client: int, body: int, variables: dict[str, int],
-                  fixed_values: dict[int, float], link_names: dict[int, str] | None = None,
-                  ) -> Chain:
-    """Build the Chain of a PyBullet body.
-
-    `variables` maps joint name -> index in q; `fixed_values` gives the value
-    of other movable joints (fingers). The simulator state is restored.
-    """
-    n_joints = pb.getNumJoints(body, physicsClientId=client)
-    infos = [pb.getJointInfo(body, j, physicsClientId=client) for j in range(n_joints)]
-    saved = [pb.getJointState(body, j, physicsClientId=client)[0] for j in range(n_joints)]
-    movable = [j for j in range(n_joints) if infos[j][2] in (REVOLUTE, PRISMATIC)]
-
-    def frames_at(values: dict[int, float]):
-        for j in movable:
-            pb.resetJointState(body, j, values.get(j, 0.0), physicsClientId=client)
-        out = {-1: _base_frame(pb, client, body)}
-        for j in range(n_joints):
-            state = pb.getLinkState(body, j, computeForwardKinematics=True,
-                                    physicsClientId=client)
-            out[j] = transforms.pose(transforms.quat_to_matrix(state[5]), state[4])
-        return out
-
-    try:
-        zero = frames_at({})
-        base_name = pb.getBodyInfo(body, physicsClientId=client)[0].decode()
-        names = dict(link_names or {})
-        links = [ChainLink(names.get(-1, base_name), -1, np.eye(4), FIXED, np.zeros(3), -1,
-                           0.0, -1)]
-        pb_to_chain = {-1: 0}
-        for j in range(n_joints):
-            info = infos[j]
-            parent_pb = info[16]
-            origin = _clean(transforms.pose_inverse(zero[parent_pb]) @ zero[j])
-            joint_name = info[1].decode()
-            kind = info[2] if info[2] in (REVOLUTE, PRISMATIC) else FIXED
-            axis = np.zeros(3)
-            if kind != FIXED:
-                moved = frames_at({j: 0.5})[j]
-                rel = transforms.pose_inverse(zero[j]) @ moved
-                if kind == REVOLUTE:
-                    axis = transforms.rotation_log(rel[:3, :3]) / 0.5
-                else:
-                    axis = rel[:3, 3] / 0.5
-                axis = _snap(axis / np.linalg.norm(axis))
-            links.append(ChainLink(names.get(j, info[12].decode()), pb_to_chain[parent_pb],
-                                   origin, kind, axis, variables.get(joint_name, -1),
-                                   fixed_values.get(j, 0.0), j))
-            pb_to_chain[j] = len(links) - 1
-    finally:
-        for j in movable:
-            pb.resetJointState(body, j, saved[j], physicsClientId=client)
-    return Chain(links, zero[-1], len(variables))
-
-
-def _base_frame(pb, client: int, body: int) -> np.ndarray:
-    """URDF frame of the base link (PyBullet reports its centre of mass)."""
-    pos, orn = pb.getBasePositionAndOrientation(body, physicsClientId=client)
-    inertial = pb.getDynamicsInfo(body, -1, physicsClientId=client)[3:5]
-    com = transforms.pose(transforms.quat_to_matrix(orn), pos)
-    local = transforms.pose(transforms.quat_to_matrix(inertial[1]), inertial[0])
-    return com @ transforms.pose_inverse(local)
-
-
-def _snap(v: np.ndarray, tol: float = 1e-6) -> np.ndarray:
-    """Round values within tol of 0 or +-1: PyBullet reports float32-rounded frames."""
-    out = np.array(v, dtype=float)
-    for target in (0.0, 1.0, -1.0):
-        out[np.abs(out - target) < tol] = target
-    return out
-
-
-def _clean(t: np.ndarray) -> np.ndarray:
-    out = t.copy()
-    out[:3, :3] = _snap(out[:3, :3])
-    u, _, vt = np.linalg.svd(out[:3, :3])
-    out[:3, :3] = _snap(u @ vt)
-    out[:3, 3] = np.round(out[:3, 3], 7)
-    return out

@@ -6,17 +6,15 @@ links, the robot's support, and the self-collision pairs worth checking.
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
 import fcl
 import numpy as np
 
 from tampcli.errors import SceneError
-from tampcli.geometry import obb, transforms
+from tampcli.geometry import obb
 from tampcli.geometry.scene_check import body_error, entry_error
 from tampcli.geometry.shapes import Shape, fcl_transform, mesh_hulls, primitive
-from tampcli.geometry.shapes import pybullet_link_shapes as link_shapes
 
 SUPPORT_TOLERANCE = 0.005  # m
 
@@ -50,7 +48,7 @@ def robot_parts(world) -> list[Part]:
     parts = []
     for i, link in enumerate(world.chain.links):
         try:
-            shapes = link_shapes(world.pb, world.client, world.robot_id, link.pb_index)
+            shapes = world.robot_link_shapes(i)
         except SceneError as e:  # a collision mesh of the robot's URDF without volume
             if e.path == world.scene.path:
                 raise
@@ -73,28 +71,11 @@ def body_shapes(world, body) -> list[Shape]:
     try:
         if body.shape == "mesh":
             return mesh_hulls(body.mesh, body.scale)
-        return _urdf_shapes(world, body)
+        return world.body_collision_shapes(body.name)
     except SceneError as e:
         if e.path == world.scene.path:
             raise
         raise body_error(world.scene, body, body.shape, f"{e.location()}: {e.message}") from None
-
-
-def _urdf_shapes(world, body) -> list[Shape]:
-    pb, client, uid = world.pb, world.client, world.pb_body(body.name)
-    base_inv = transforms.pose_inverse(body.matrix)
-    shapes = []
-    for link in range(-1, pb.getNumJoints(uid, physicsClientId=client)):
-        if link == -1:
-            frame = np.eye(4)
-        else:
-            state = pb.getLinkState(uid, link, computeForwardKinematics=True,
-                                    physicsClientId=client)
-            frame = base_inv @ transforms.pose(transforms.quat_to_matrix(state[5]), state[4])
-        for s in link_shapes(pb, client, uid, link):
-            shapes.append(dataclasses.replace(s, local=frame @ s.local,
-                                              center=frame[:3, :3] @ s.center + frame[:3, 3]))
-    return shapes
 
 
 def rigid_groups(chain) -> list[int]:

@@ -14,10 +14,7 @@ import fcl
 import numpy as np
 
 from tampcli.errors import SceneError
-from tampcli.geometry import transforms
 from tampcli.geometry.meshes import read_mesh_parts
-
-GEOM_SPHERE, GEOM_BOX, GEOM_CYLINDER, GEOM_MESH, GEOM_CAPSULE = 2, 3, 4, 5, 7
 
 
 @dataclass(frozen=True)
@@ -138,38 +135,6 @@ def _hull(points: np.ndarray, path: str):
     vertices.flags.writeable = False
     face_array.flags.writeable = False
     return vertices, face_array
-
-
-def pybullet_link_shapes(pb, client: int, body: int, link: int) -> list[Shape]:
-    """Collision shapes of one link of a PyBullet body, in its URDF link frame.
-
-    PyBullet reports each shape relative to the link's inertial frame, and
-    one entry per convex part of a mesh (all naming the same file): each
-    file is read once.
-    """
-    inertial = pb.getDynamicsInfo(body, link, physicsClientId=client)[3:5]
-    to_link = transforms.pose(transforms.quat_to_matrix(inertial[1]), inertial[0])
-    shapes = []
-    meshes_seen = set()
-    for data in pb.getCollisionShapeData(body, link, physicsClientId=client):
-        kind, dims, filename = data[2], data[3], data[4]
-        local = to_link @ transforms.pose(transforms.quat_to_matrix(data[6]), data[5])
-        if kind == GEOM_BOX:
-            shapes.append(primitive("box", dims, local))
-        elif kind == GEOM_SPHERE:
-            shapes.append(primitive("sphere", dims[:1], local))
-        elif kind == GEOM_CYLINDER:
-            shapes.append(primitive("cylinder", (dims[1], dims[0]), local))
-        elif kind == GEOM_CAPSULE:
-            shapes.append(primitive("capsule", (dims[1], dims[0]), local))
-        elif kind == GEOM_MESH:
-            name = filename.decode() if isinstance(filename, bytes) else filename
-            key = (name, tuple(dims), tuple(np.round(local, 9).ravel()))
-            if name in ("", "unknown_file") or key in meshes_seen:
-                continue
-            meshes_seen.add(key)
-            shapes.extend(mesh_hulls(name, dims, local))
-    return shapes
 
 
 def fcl_transform(t: np.ndarray) -> fcl.Transform:

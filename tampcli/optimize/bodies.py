@@ -77,7 +77,7 @@ def body_info(body, world=None) -> BodyInfo:
 def _aabb(world, name):
     if world is None:
         raise ValueError(f"body {name!r}: its extent needs the World (mesh or URDF)")
-    return world._aabb(world.pb_body(name))
+    return world.aabb(name)
 
 
 def pose_matrix(x: float, y: float, z: float, yaw: float) -> np.ndarray:

@@ -10,7 +10,7 @@ IPC = ROOT / "benchmarks" / "ipc"
 GRIPPER_DOMAIN = IPC / "gripper" / "domain.pddl"
 GRIPPER_P01 = IPC / "gripper" / "prob01.pddl"
 # Hard enough that `plan` cannot finish it within a second, even on a fast machine.
-HARD = IPC / "gripper" / "prob20.pddl"
+HARD = IPC / "depot" / "p15.pddl"
 
 MALFORMED = "(define (problem bad)\n (:domain gripper-strips)\n (:objects a b\n (:init (room a))\n"
 

@@ -5,7 +5,7 @@ from tampcli.geometry import transforms
 from tampcli.geometry.collision import CollisionChecker
 from tampcli.geometry.world import World
 
-from .worlds import kuka_scene, panda_scene, planar_scene
+from .worlds import kuka_scene, panda_scene, planar_scene, simulator
 
 # PyBullet pads each convex mesh with a 1 mm collision margin; primitives have none.
 PYBULLET_MESH_MARGIN = 0.001
@@ -32,8 +32,8 @@ def kuka():
 def _pybullet_ids(world, name):
     kind, _, bare = name.partition(":")
     if kind == "link":
-        return world.robot_id, world.chain.links[world.chain.index[bare]].pb_index
-    return world.pb_body(bare), -1
+        return simulator(world).robot, world.chain.links[world.chain.index[bare]].pb_index
+    return simulator(world).bodies[bare], -1
 
 
 def _compare_with_pybullet(world, checker, configurations, activation):
@@ -42,7 +42,8 @@ def _compare_with_pybullet(world, checker, configurations, activation):
     A body made of several convex parts reports one contact per part: the
     smallest is PyBullet's answer for the body.
     """
-    pb, client = world.pb, world.client
+    sim = simulator(world)
+    pb, client = sim.pb, sim.client
     compared = 0
     try:
         for q in configurations:
@@ -54,7 +55,7 @@ def _compare_with_pybullet(world, checker, configurations, activation):
                     best[key] = contact
             for (a, b), contact in best.items():
                 (ua, la), (ub, lb) = _pybullet_ids(world, a), _pybullet_ids(world, b)
-                if lb == -1 and world.pb.getNumJoints(ub, physicsClientId=client) > 0:
+                if lb == -1 and pb.getNumJoints(ub, physicsClientId=client) > 0:
                     points = pb.getClosestPoints(ua, ub, 0.5, linkIndexA=la,
                                                  physicsClientId=client)
                 else:

@@ -12,7 +12,7 @@ from tampcli.geometry import transforms
 from tampcli.geometry.collision import CollisionChecker
 from tampcli.geometry.world import World
 
-from .worlds import panda_scene
+from .worlds import panda_scene, simulator
 
 ACTIVATION = 0.1  # m: what the optimizer uses; pairs beyond it are pruned
 FAR = 0.8  # m: every pair closer than this is compared
@@ -27,8 +27,9 @@ def panda():
 
 
 def _pybullet_distance(world, a: str, b: str) -> float:
-    points = world.pb.getClosestPoints(world.pb_body(a), world.pb_body(b), 1.0, -1, -1,
-                                       physicsClientId=world.client)
+    sim = simulator(world)
+    points = sim.pb.getClosestPoints(sim.bodies[a], sim.bodies[b], 1.0, -1, -1,
+                                     physicsClientId=sim.client)
     return min(p[8] for p in points) if points else np.inf
 
 
@@ -54,8 +55,9 @@ def test_held_cube_distances_match_pybullet(panda):
     world, checker = panda
     others = [name for name in world.body_names if name != HELD]
     compared = penetrating = 0
-    start_pose = world.pb.getBasePositionAndOrientation(world.pb_body(HELD),
-                                                        physicsClientId=world.client)
+    sim = simulator(world)
+    start_pose = sim.pb.getBasePositionAndOrientation(sim.bodies[HELD],
+                                                      physicsClientId=sim.client)
     try:
         for q, grasp in _random_cases(world, 100, seed=31):
             world.set_state(q, {HELD: world.tool_pose(q) @ grasp})
@@ -81,6 +83,6 @@ def test_held_cube_distances_match_pybullet(panda):
     finally:
         world.set_state(world.start, {b.name: b.matrix for b in world.scene.bodies})
     assert compared >= 250 and penetrating >= 3, (compared, penetrating)
-    restored = world.pb.getBasePositionAndOrientation(world.pb_body(HELD),
-                                                      physicsClientId=world.client)
+    restored = sim.pb.getBasePositionAndOrientation(sim.bodies[HELD],
+                                                    physicsClientId=sim.client)
     np.testing.assert_allclose(np.concatenate(restored), np.concatenate(start_pose), atol=1e-9)

@@ -4,7 +4,7 @@ import pytest
 from tampcli.geometry import transforms
 from tampcli.geometry.world import World
 
-from .worlds import kuka_scene, panda_scene, planar_scene
+from .worlds import kuka_scene, panda_scene, planar_scene, simulator
 
 
 @pytest.fixture(scope="module")
@@ -31,11 +31,11 @@ def _random_qs(world, count, seed=0):
 
 
 def _pybullet_link_frames(world):
-    pb, c = world.pb, world.client
+    sim = simulator(world)
     out = {}
     for link in world.chain.links[1:]:
-        s = pb.getLinkState(world.robot_id, link.pb_index, computeForwardKinematics=True,
-                            physicsClientId=c)
+        s = sim.pb.getLinkState(sim.robot, link.pb_index, computeForwardKinematics=True,
+                                physicsClientId=sim.client)
         out[link.name] = transforms.pose(transforms.quat_to_matrix(s[5]), s[4])
     return out
 
@@ -114,7 +114,7 @@ def test_tool_jacobian_matches_finite_differences(panda):
 
 
 def test_point_jacobian_matches_pybullet(panda):
-    pb, c = panda.pb, panda.client
+    sim = simulator(panda)
     try:
         for q in _random_qs(panda, 5, seed=6):
             panda.set_state(q)
@@ -122,8 +122,8 @@ def test_point_jacobian_matches_pybullet(panda):
             local = [0.01, 0.02, 0.03]
             # PyBullet wants all movable joints (fingers too) and a URDF-link-frame position.
             full = list(q) + [0.04, 0.04]
-            lin, _ = pb.calculateJacobian(panda.robot_id, link.pb_index, local, full,
-                                          [0.0] * 9, [0.0] * 9, physicsClientId=c)
+            lin, _ = sim.pb.calculateJacobian(sim.robot, link.pb_index, local, full,
+                                              [0.0] * 9, [0.0] * 9, physicsClientId=sim.client)
             frame = panda.fk(q)["panda_hand"]
             point = frame[:3, :3] @ local + frame[:3, 3]
             np.testing.assert_allclose(panda.point_jacobian(q, "panda_hand", point),
@@ -156,17 +156,36 @@ def test_ik_position_only(panda):
     np.testing.assert_allclose(panda.tool_pose(q)[:3, 3], [0.4, 0.2, 0.3], atol=1e-4)
 
 
-def test_queries_leave_simulator_unchanged(panda):
-    pb, c = panda.pb, panda.client
-    before = [pb.getJointState(panda.robot_id, j, physicsClientId=c)[0]
-              for j in range(pb.getNumJoints(panda.robot_id, physicsClientId=c))]
-    q = panda.upper - 0.1
-    panda.fk(q)
-    panda.point_jacobian(q, "panda_link5", [0.1, 0.1, 0.5])
-    panda.ik(panda.tool_pose(q))
-    after = [pb.getJointState(panda.robot_id, j, physicsClientId=c)[0]
-             for j in range(pb.getNumJoints(panda.robot_id, physicsClientId=c))]
-    assert before == after
+def _simulator_state(world):
+    """Every joint value and every body pose in the World's client."""
+    sim = simulator(world)
+    joints = [sim.pb.getJointState(sim.robot, j, physicsClientId=sim.client)[0]
+              for j in range(sim.pb.getNumJoints(sim.robot, physicsClientId=sim.client))]
+    poses = {name: sim.pb.getBasePositionAndOrientation(uid, physicsClientId=sim.client)
+             for name, uid in sim.bodies.items()}
+    return joints, poses
+
+
+@pytest.mark.parametrize("name", ["panda", "kuka"])
+def test_queries_leave_simulator_unchanged(name, request):
+    world = request.getfixturevalue(name)
+    before = _simulator_state(world)
+    q = world.upper - 0.1
+    world.fk(q)
+    world.point_jacobian(q, world.link_names[5], [0.1, 0.1, 0.5])
+    world.ik(world.tool_pose(q))
+    for body in world.body_names:
+        world.aabb(body)
+        world.aabb(body, base_only=True)
+    for i in range(len(world.chain.links)):
+        world.robot_link_shapes(i)
+    for body in world.scene.bodies:
+        if body.shape == "urdf":
+            assert world.body_collision_shapes(body.name)
+    world.part_boxes()
+    world.bounds()
+    world.camera_image(16, 12, eye=(1.5, 1.5, 1.5), target=(0.0, 0.0, 0.0))
+    assert _simulator_state(world) == before
 
 
 def test_body_pose_and_names(panda):
@@ -191,9 +210,9 @@ def test_set_state_and_camera_image(planar):
 
 def test_close_releases_client():
     world = World(planar_scene())
-    client = world.client
+    sim = simulator(world)
     world.close()
-    assert not world.pb.isConnected(physicsClientId=client)
+    assert not sim.pb.isConnected(physicsClientId=sim.client)
     world.close()
 
 
@@ -252,11 +271,11 @@ def test_batched_fk_and_jacobians_match_single(name, request):
 
 
 def test_fingers_open_and_close_for_replay(panda):
-    pb, c = panda.pb, panda.client
-    fingers = panda.finger_joints
+    sim = simulator(panda)
 
     def opening():
-        return [pb.getJointState(panda.robot_id, j, physicsClientId=c)[0] for j in fingers]
+        return [sim.pb.getJointState(sim.robot, j, physicsClientId=sim.client)[0]
+                for j in sim.fingers]
 
     try:
         assert opening() == pytest.approx([0.04, 0.04])

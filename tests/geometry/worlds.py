@@ -1,4 +1,6 @@
-"""Small scenes built in code for the geometry tests."""
+"""Small scenes built in code for the geometry tests, and PyBullet's side of a World."""
+
+from dataclasses import dataclass
 
 from tampcli.geometry.scene import Body, RobotSpec, Scene
 
@@ -50,3 +52,20 @@ def kuka_scene() -> Scene:
              mesh=f"{data}/cube.obj", scale=(0.1, 0.1, 0.1)),
     )
     return Scene(None, robot, bodies)
+
+
+@dataclass(frozen=True)
+class Simulator:
+    """The PyBullet client behind a World and the ids of what it loaded: World keeps
+    them private, tests reach for them only to hold our answers against PyBullet's."""
+
+    pb: object
+    client: int
+    robot: int
+    bodies: dict
+    fingers: tuple
+
+
+def simulator(world) -> Simulator:
+    return Simulator(world._pb, world._client, world._robot, dict(world._bodies),
+                     world._fingers)

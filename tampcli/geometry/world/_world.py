@@ -3,7 +3,8 @@
 PyBullet stays behind this class: it owns its client, closes it, and no
 query leaves the simulator changed. Kinematic queries (fk, Jacobians, ik)
 run on a numpy copy of the joint tree (chain.py) and never touch PyBullet;
-only `set_state` (for replay) moves things.
+only `set_state` (for replay), `add_visual_box` (scenery) and
+`start_dynamics` (the physics replay) change the simulator.
 """
 
 from __future__ import annotations
@@ -13,41 +14,16 @@ from pathlib import Path
 
 import numpy as np
 
-from tampcli.errors import SceneError
 from tampcli.geometry import transforms
-from tampcli.geometry.chain import REVOLUTE, Chain, measure_chain
+from tampcli.geometry.chain import REVOLUTE, Chain
 from tampcli.geometry.ik import solve_ik
-from tampcli.geometry.scene import PANDA_READY, Body, Scene
-from tampcli.geometry.scene_check import body_error, entry_error, urdf_problem
-from tampcli.geometry.shapes import mesh_hulls
-
-
-def _import_pybullet():
-    """PyBullet writes "pybullet build time: ..." on the process's stderr (fd 2, from C)
-    when imported: keep that line off what users read."""
-    import os
-    import sys
-
-    sys.stderr.flush()
-    try:
-        saved = os.dup(2)
-    except OSError:  # no fd 2 to silence
-        import pybullet as pb
-        import pybullet_data as data
-        return pb, data
-    try:
-        quiet = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(quiet, 2)
-        os.close(quiet)
-        import pybullet as pb
-        import pybullet_data as data
-    finally:
-        os.dup2(saved, 2)
-        os.close(saved)
-    return pb, data
-
-
-pybullet, pybullet_data = _import_pybullet()
+from tampcli.geometry.scene import PANDA_READY, Scene
+from tampcli.geometry.scene_check import entry_error
+from tampcli.geometry.shapes import Shape
+from tampcli.geometry.world import _measure
+from tampcli.geometry.world._dynamics import Dynamics
+from tampcli.geometry.world._load import load_body, load_urdf, make_planar
+from tampcli.geometry.world._pybullet import pybullet, pybullet_data
 
 PANDA_URDF = "franka_panda/panda.urdf"
 PANDA_JOINTS = tuple(f"panda_joint{i}" for i in range(1, 8))
@@ -66,17 +42,18 @@ class World:
     and collisions); `planar` (a vertical cylinder whose joints `x`, `y` hold
     world coordinates, bounded by the scene's extent); or any URDF arm with
     the `joints` and `tool_link` the scene names. Link frames are URDF link
-    frames. All bodies are static in the simulator: nothing is simulated.
+    frames. All bodies are static in the simulator: nothing is simulated
+    unless `start_dynamics` is called.
     """
 
     def __init__(self, scene: Scene):
         self.scene = scene
-        self.pb = pybullet
-        self.client = pybullet.connect(pybullet.DIRECT)
+        self._pb = pybullet
+        self._client = pybullet.connect(pybullet.DIRECT)
         try:
             self._bodies: dict[str, int] = {}
             for body in scene.bodies:
-                self._bodies[body.name] = self._load_body(body)
+                self._bodies[body.name] = load_body(self._pb, self._client, scene, body)
             self._load_robot()
         except BaseException:
             self.close()
@@ -85,10 +62,10 @@ class World:
     # ------------------------------------------------------------ lifecycle
 
     def close(self) -> None:
-        if self.client is not None and self.client >= 0:
-            if self.pb.isConnected(physicsClientId=self.client):
-                self.pb.disconnect(physicsClientId=self.client)
-        self.client = None
+        if self._client is not None and self._client >= 0:
+            if self._pb.isConnected(physicsClientId=self._client):
+                self._pb.disconnect(physicsClientId=self._client)
+        self._client = None
 
     def __enter__(self) -> World:
         return self
@@ -104,80 +81,13 @@ class World:
 
     # ------------------------------------------------------------ loading
 
-    def _load_body(self, body: Body) -> int:
-        pb, c = self.pb, self.client
-        pos, orn = body.pose[:3], body.pose[3:]
-        if body.shape == "urdf":
-            uid = self._load_urdf(body.urdf, pos, orn, body.scale[0],
-                                  lambda message: body_error(self.scene, body, "urdf", message))
-            pb.changeVisualShape(uid, -1, rgbaColor=body.color, physicsClientId=c)
-            return uid
-        if body.shape == "box":
-            half = [s / 2 for s in body.size]
-            col = pb.createCollisionShape(pb.GEOM_BOX, halfExtents=half, physicsClientId=c)
-            vis = pb.createVisualShape(pb.GEOM_BOX, halfExtents=half, rgbaColor=body.color,
-                                       physicsClientId=c)
-        elif body.shape == "cylinder":
-            r, h = body.size
-            col = pb.createCollisionShape(pb.GEOM_CYLINDER, radius=r, height=h, physicsClientId=c)
-            vis = pb.createVisualShape(pb.GEOM_CYLINDER, radius=r, length=h,
-                                       rgbaColor=body.color, physicsClientId=c)
-        elif body.shape == "sphere":
-            col = pb.createCollisionShape(pb.GEOM_SPHERE, radius=body.size[0], physicsClientId=c)
-            vis = pb.createVisualShape(pb.GEOM_SPHERE, radius=body.size[0],
-                                       rgbaColor=body.color, physicsClientId=c)
-        else:
-            col, vis = self._load_mesh(body)
-        return pb.createMultiBody(0.0, col, vis, pos, orn, physicsClientId=c)
-
-    def _load_mesh(self, body: Body) -> tuple[int, int]:
-        """Collision and visual shapes of a mesh body; a file either reader refuses is a
-        SceneError at the body's `mesh` key.
-
-        The file is read (and its hulls built, cached for the collision checker)
-        before PyBullet sees it: that names what is wrong, where PyBullet only
-        says that it failed.
-        """
-        pb, c = self.pb, self.client
-        try:
-            mesh_hulls(body.mesh, body.scale)
-        except SceneError as e:
-            raise body_error(self.scene, body, "mesh", f"{e.location()}: {e.message}") from None
-        try:
-            col = pb.createCollisionShape(pb.GEOM_MESH, fileName=body.mesh,
-                                          meshScale=list(body.scale), physicsClientId=c)
-            vis = pb.createVisualShape(pb.GEOM_MESH, fileName=body.mesh,
-                                       meshScale=list(body.scale), rgbaColor=body.color,
-                                       physicsClientId=c)
-        except pb.error:
-            col = -1
-        if col < 0:
-            hint = " (an OBJ file needs `v` and `f` lines)" if body.mesh.lower().endswith(
-                ".obj") else ""
-            raise body_error(self.scene, body, "mesh",
-                             f"PyBullet cannot read the mesh {body.mesh}{hint}")
-        return col, vis
-
-    def _load_urdf(self, path, pos, orn, scale: float, error) -> int:
-        """loadURDF; `error(message)` makes the located SceneError for a file it refuses."""
-        problem = urdf_problem(path)
-        if problem:
-            raise error(problem)
-        try:
-            return self.pb.loadURDF(path, pos, orn, useFixedBase=True, globalScaling=scale,
-                                    physicsClientId=self.client)
-        except self.pb.error as e:
-            reason = str(e).rstrip(".")
-            raise error(f"PyBullet cannot load {path}: {reason} (a malformed link, or a mesh "
-                        "file it names is missing)") from None
-
     def _load_robot(self) -> None:
-        pb, c, spec = self.pb, self.client, self.scene.robot
+        pb, c, spec = self._pb, self._client, self.scene.robot
         base = spec.base_pose
-        self.finger_joints: tuple[int, ...] = ()
+        self._fingers: tuple[int, ...] = ()
         link_names = None
         if spec.model == "planar":
-            uid = self._make_planar(spec.radius, spec.height, float(base[2, 3]))
+            uid = make_planar(pb, c, spec.radius, spec.height, float(base[2, 3]))
             joints = ("x", "y")
             tool = "planar_body"
             pb_joint_names = {0: "x", 1: "y"}
@@ -188,12 +98,12 @@ class World:
                 joints, tool = PANDA_JOINTS, PANDA_TOOL
             else:
                 path, joints, tool = spec.urdf, spec.joints, spec.tool_link
-            uid = self._load_urdf(path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]),
-                                  1.0, lambda message: entry_error(self.scene, message,
-                                                                   "robot", 0, "urdf"))
+            uid = load_urdf(pb, c, path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]),
+                            1.0, lambda message: entry_error(self.scene, message,
+                                                             "robot", 0, "urdf"))
             pb_joint_names = {j: pb.getJointInfo(uid, j, physicsClientId=c)[1].decode()
                               for j in range(pb.getNumJoints(uid, physicsClientId=c))}
-        self.robot_id = uid
+        self._robot = uid
         by_name = {name: j for j, name in pb_joint_names.items()}
         missing = [j for j in joints if j not in by_name]
         if missing:
@@ -203,12 +113,12 @@ class World:
         self._pb_joints = tuple(by_name[j] for j in joints)
         fixed_values = {}
         if spec.model == "panda":
-            self.finger_joints = tuple(by_name[f] for f in PANDA_FINGERS)
-            fixed_values = {j: PANDA_FINGER_OPEN for j in self.finger_joints}
-            for j in self.finger_joints:
+            self._fingers = tuple(by_name[f] for f in PANDA_FINGERS)
+            fixed_values = {j: PANDA_FINGER_OPEN for j in self._fingers}
+            for j in self._fingers:
                 pb.resetJointState(uid, j, PANDA_FINGER_OPEN, physicsClientId=c)
-        self.chain: Chain = measure_chain(pb, c, uid, _pb_names_to_q(pb, c, uid, self._pb_joints),
-                                          fixed_values, link_names)
+        self.chain: Chain = _measure.measure_chain(
+            pb, c, uid, _pb_names_to_q(pb, c, uid, self._pb_joints), fixed_values, link_names)
         self.link_names: tuple[str, ...] = self.chain.names
         if tool not in self.chain.index:
             raise entry_error(self.scene, f"the robot has no link named {tool!r}", "robot", 0,
@@ -241,21 +151,6 @@ class World:
             v.flags.writeable = False
         self._set_joints(self.start)
 
-    def _make_planar(self, radius: float, height: float, z: float) -> int:
-        pb, c = self.pb, self.client
-        col = pb.createCollisionShape(pb.GEOM_CYLINDER, radius=radius, height=height,
-                                      physicsClientId=c)
-        vis = pb.createVisualShape(pb.GEOM_CYLINDER, radius=radius, length=height,
-                                   rgbaColor=(0.9, 0.5, 0.1, 1.0), physicsClientId=c)
-        return pb.createMultiBody(
-            0.0, -1, -1, [0.0, 0.0, z], linkMasses=[0.1, 0.1],
-            linkCollisionShapeIndices=[-1, col], linkVisualShapeIndices=[-1, vis],
-            linkPositions=[[0, 0, 0]] * 2, linkOrientations=[[0, 0, 0, 1]] * 2,
-            linkInertialFramePositions=[[0, 0, 0]] * 2,
-            linkInertialFrameOrientations=[[0, 0, 0, 1]] * 2, linkParentIndices=[0, 1],
-            linkJointTypes=[pb.JOINT_PRISMATIC] * 2, linkJointAxis=[[1, 0, 0], [0, 1, 0]],
-            physicsClientId=c)
-
     def _scene_extent(self) -> tuple[np.ndarray, np.ndarray]:
         """Box around all bodies (x, y, z); a unit box about the base when the scene is empty."""
         los, his = [], []
@@ -268,18 +163,14 @@ class World:
             return base - 1.0, base + 1.0
         return np.min(los, axis=0), np.max(his, axis=0)
 
-    def aabb(self, name: str) -> tuple[np.ndarray, np.ndarray]:
-        """Axis-aligned box (lo, hi) of a scene body at its start pose."""
-        return self._aabb(self._bodies[name])
+    def aabb(self, name: str, base_only: bool = False) -> tuple[np.ndarray, np.ndarray]:
+        """Axis-aligned box (lo, hi) of a scene body (its base link only, or all its
+        links) where it stands now: its start pose unless `set_state` moved it."""
+        links = [-1] if base_only else None
+        return _measure.aabb(self._pb, self._client, self._bodies[name], links)
 
     def _aabb(self, uid: int) -> tuple[np.ndarray, np.ndarray]:
-        pb, c = self.pb, self.client
-        los, his = [], []
-        for link in range(-1, pb.getNumJoints(uid, physicsClientId=c)):
-            lo, hi = pb.getAABB(uid, link, physicsClientId=c)
-            los.append(lo)
-            his.append(hi)
-        return np.min(los, axis=0), np.max(his, axis=0)
+        return _measure.aabb(self._pb, self._client, uid)
 
     # ------------------------------------------------------------ kinematics
 
@@ -345,7 +236,7 @@ class World:
 
     def _set_joints(self, q) -> None:
         for j, v in zip(self._pb_joints, q, strict=True):
-            self.pb.resetJointState(self.robot_id, j, float(v), physicsClientId=self.client)
+            self._pb.resetJointState(self._robot, j, float(v), physicsClientId=self._client)
 
     def set_state(self, q, body_poses: dict | None = None, fingers_closed: bool = False,
                   finger_opening: float | None = None) -> None:
@@ -355,46 +246,76 @@ class World:
         else fully closed.
         """
         self._set_joints(np.asarray(q, dtype=float))
-        if self.finger_joints:
+        if self._fingers:
             value = PANDA_FINGER_OPEN
             if fingers_closed:
                 value = 0.0 if finger_opening is None else float(finger_opening)
-            for j in self.finger_joints:
-                self.pb.resetJointState(self.robot_id, j, value, physicsClientId=self.client)
+            for j in self._fingers:
+                self._pb.resetJointState(self._robot, j, value, physicsClientId=self._client)
         for name, t in (body_poses or {}).items():
             t = np.asarray(t, dtype=float)
             if t.shape == (7,):
                 t = transforms.pose_from_xyzquat(t)
-            self.pb.resetBasePositionAndOrientation(
+            self._pb.resetBasePositionAndOrientation(
                 self._bodies[name], t[:3, 3], transforms.matrix_to_quat(t[:3, :3]),
-                physicsClientId=self.client)
+                physicsClientId=self._client)
 
     def camera_image(self, width: int, height: int, eye, target, up=(0.0, 0.0, 1.0),
                      fov: float = 50.0) -> np.ndarray:
         """(height, width, 3) uint8 RGB image of the current state (TinyRenderer)."""
-        pb = self.pb
-        view = pb.computeViewMatrix(list(eye), list(target), list(up), physicsClientId=self.client)
-        proj = pb.computeProjectionMatrixFOV(fov, width / height, 0.01, 20.0,
-                                             physicsClientId=self.client)
+        pb, c = self._pb, self._client
+        view = pb.computeViewMatrix(list(eye), list(target), list(up), physicsClientId=c)
+        proj = pb.computeProjectionMatrixFOV(fov, width / height, 0.01, 20.0, physicsClientId=c)
         _, _, rgba, _, _ = pb.getCameraImage(width, height, view, proj,
-                                             renderer=pb.ER_TINY_RENDERER,
-                                             physicsClientId=self.client)
+                                             renderer=pb.ER_TINY_RENDERER, physicsClientId=c)
         image = np.asarray(rgba, dtype=np.uint8).reshape(height, width, 4)
         return np.ascontiguousarray(image[:, :, :3])
 
     def bounds(self) -> tuple[np.ndarray, np.ndarray]:
         """(lo, hi) corners of a box around the scene and the robot as it stands now."""
         los, his = [], []
-        for uid in [*self._bodies.values(), self.robot_id]:
+        for uid in [*self._bodies.values(), self._robot]:
             lo, hi = self._aabb(uid)
             los.append(lo)
             his.append(hi)
         return np.min(los, axis=0), np.max(his, axis=0)
 
-    # ------------------------------------------------------------ for collision.py
+    def part_boxes(self) -> list[tuple[np.ndarray, np.ndarray]]:
+        """(lo, hi) of the base link of every scene body, then of every robot link,
+        as they stand now: what a camera framing the scene must keep in view."""
+        pb, c = self._pb, self._client
+        robot_links = range(-1, pb.getNumJoints(self._robot, physicsClientId=c))
+        return ([_measure.aabb(pb, c, self._bodies[name], [-1]) for name in self.body_names]
+                + [_measure.aabb(pb, c, self._robot, [link]) for link in robot_links])
 
-    def pb_body(self, name: str) -> int:
-        return self._bodies[name]
+    def add_visual_box(self, center, half_extents, color) -> None:
+        """Draw a box that has no collision shape, so it can never change a collision
+        query or `bounds()` (video scenery: goal regions)."""
+        pb, c = self._pb, self._client
+        visual = pb.createVisualShape(pb.GEOM_BOX, halfExtents=list(half_extents),
+                                      rgbaColor=list(color), physicsClientId=c)
+        pb.createMultiBody(0.0, -1, visual, list(center), physicsClientId=c)
+
+    def start_dynamics(self, hz: float, gravity: float = -9.81) -> Dynamics:
+        """Turn this World into a simulation stepping at `hz` under `gravity` (m/s^2, z).
+
+        For a World of its own: the bodies made dynamic move for good.
+        """
+        return Dynamics(self._pb, self._client, self._robot, dict(self._bodies),
+                        self.joint_names, self.tool_link, self._fingers, PANDA_FINGER_OPEN, hz,
+                        gravity)
+
+    # ------------------------------------------------------------ collision shapes
+
+    def robot_link_shapes(self, link: int) -> list[Shape]:
+        """Collision shapes of robot link `link` (index in `chain.links`), in its frame."""
+        return _measure.link_shapes(self._pb, self._client, self._robot,
+                                    self.chain.links[link].pb_index)
+
+    def body_collision_shapes(self, name: str) -> list[Shape]:
+        """Collision shapes of all links of a URDF scene body, in the body's frame."""
+        return _measure.body_shapes(self._pb, self._client, self._bodies[name],
+                                    self.scene.body(name).matrix)
 
 
 def _pb_names_to_q(pb, client, uid, pb_joints) -> dict[str, int]:
