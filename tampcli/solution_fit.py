@@ -53,3 +53,7 @@ def check_fits_world(solution: SolutionFile, world, scene_path) -> None:
         raise SolutionFileError(f"no poses for {', '.join(map(repr, missing))}: `objects` needs "
                                 f"every movable body of the scene {scene_path}", path,
                                 key="objects")
+    for i, phase in enumerate(solution.raw.phases):
+        if phase.attached is not None and phase.attached not in sol.objects:
+            raise SolutionFileError(f"attached object {phase.attached!r} has no poses in "
+                                    "`objects`", path, key=f"phases[{i}].attached")

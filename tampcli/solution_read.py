@@ -77,7 +77,7 @@ def read_solution(path: str | Path) -> SolutionFile:
         raise SolutionFileError("expected an object of name -> poses", path, key="objects")
     objects = {name: [list(p) for p in _matrix(poses, path, f"objects.{name}")]
                for name, poses in objects.items()}
-    plan = _list(data["plan"], path, "plan")
+    plan = data["plan"]
     _strings(plan, path, "plan")
     raw = Solution(
         domain=data["domain"], problem=data["problem"], scene=data["scene"],
@@ -184,7 +184,7 @@ def _check_trajectory(sol: Solution, joints, path: str) -> None:
     if fingers and model not in FINGERED_MODELS:
         raise SolutionFileError(f"{fingers[0]!r} is a finger joint of the Panda, but the robot "
                                 f"is {model!r}", path, key="robot.joints")
-    if len(fingers) == len(joints) and n:
+    if fingers and len(fingers) == len(joints):
         raise SolutionFileError("only finger joints: the arm's joints are missing", path,
                                 key="robot.joints")
 
@@ -273,10 +273,6 @@ def _check_objects(sol: Solution, path: str) -> None:
             if math.hypot(*pose[3:]) < 1e-9:
                 raise SolutionFileError(f"pose {k} has a zero quaternion (no rotation is "
                                         "[0, 0, 0, 1])", path, key=key)
-    for i, phase in enumerate(sol.phases):
-        if phase.attached is not None and phase.attached not in sol.objects:
-            raise SolutionFileError(f"attached object {phase.attached!r} has no poses in "
-                                    "`objects`", path, key=f"phases[{i}].attached")
 
 
 def _canonical(sol: Solution, path: str, joints: tuple[str, ...]) -> SolutionFile:
@@ -311,8 +307,8 @@ def _canonical(sol: Solution, path: str, joints: tuple[str, ...]) -> SolutionFil
 def _phase(p, i: int, path: str) -> Phase:
     key = f"phases[{i}]"
     if not isinstance(p, dict) or not {"action", "start", "end", "attached"} <= set(p):
-        raise SolutionFileError(f"expected an object with action, start, end, attached; "
-                                f"found {p!r}", path, key=key)
+        raise SolutionFileError(f"needs action, start, end and attached; found {p!r}",
+                                path, key=key)
     return Phase(p["action"], p["start"], p["end"], p["attached"])
 
 
