@@ -99,17 +99,29 @@ def test_symbolic_solution_json_is_valid(cli, tmp_path):
     assert data["geometry"] in ("checked", "unavailable")
 
 
-@pytest.mark.parametrize("content,where", [
-    ('{"plan": ["(move rooma roomb)",]}', ":1:"),
-    ('{"version": 1}', "plan: missing key"),
-    ('{"plan": "(move rooma roomb)"}', "plan: expected a list"),
-    ('{"plan": ["(move rooma roomb)", 3]}', "plan[1]: expected a string"),
-    ('{"plan": ["(move rooma roomb) (move roomb rooma)"]}', "plan[0]: expected one step"),
-])
-def test_bad_solution_json_exits_2(cli, plan_file, content, where):
-    run = cli("validate", GRIPPER, GRIPPER1, plan_file([content], "solution.json"))
+def test_solution_json_not_json_exits_2(cli, plan_file):
+    run = cli("validate", GRIPPER, GRIPPER1,
+              plan_file(['{"plan": ["(move rooma roomb)",]}'], "solution.json"))
     assert run.code == 2, run.out
-    assert where in run.err
+    assert ":1:" in run.err and "not valid JSON" in run.err
+    assert "Traceback" not in run.err
+
+
+@pytest.mark.parametrize("edit,where", [
+    (lambda d: d.pop("plan"), "plan: missing key"),
+    (lambda d: d.update(plan="(move rooma roomb)"), "plan: expected a list"),
+    (lambda d: d.update(plan=["(move rooma roomb)", 3]), "plan[1]: expected a string"),
+    (lambda d: d.update(plan=["(move rooma roomb) (move roomb rooma)"]),
+     "plan[0]: expected one step"),
+])
+def test_bad_solution_json_exits_2(cli, tmp_path, edit, where):
+    path = write_solution(tmp_path, PLAN)
+    data = json.loads(path.read_text())
+    edit(data)
+    path.write_text(json.dumps(data))
+    run = cli("validate", GRIPPER, GRIPPER1, path)
+    assert run.code == 2, run.out
+    assert f"{path}: {where}" in run.err
     assert "Traceback" not in run.err
 
 

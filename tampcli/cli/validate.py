@@ -1,8 +1,9 @@
 """`tampcli validate DOMAIN PROBLEM PLAN`: check a plan file or a solution.json.
 
 Exit 0 when valid ("valid, cost N"), 1 when invalid (each violation listed:
-step, action, why), 2 on bad input. A solution.json has its `plan` checked
-symbolically, then its trajectory geometrically when the geometric verifier
+step, action, why), 2 on bad input. A solution.json is read and checked for
+structure (solution_read), its `plan` checked symbolically, then its trajectory
+geometrically (validate_geometry) when the geometric verifier
 (`tampcli.optimize.verify`) is installed.
 """
 
@@ -11,15 +12,14 @@ from __future__ import annotations
 import contextlib
 import ctypes
 import importlib
-import json
 import os
 import sys
-from pathlib import Path
 
-from tampcli.errors import ExitCode, SolutionFileError, source_line_at
+from tampcli.errors import ExitCode
 from tampcli.pddl import parser
-from tampcli.search.plan_text import parse_plan
+from tampcli.search.plan_text import parse_plan, parse_step
 from tampcli.search.validate import PlanReport, read_plan_file, validate_plan
+from tampcli.solution_read import read_solution
 
 
 def add_parser(p) -> None:
@@ -32,9 +32,11 @@ def run(args, ui) -> int:
     domain = parser.parse_domain_file(args.domain)
     problem = parser.parse_problem_file(args.problem)
     text = read_plan_file(args.plan)
-    is_solution = args.plan.endswith(".json") or text.lstrip().startswith("{")
-    if is_solution:
-        report = validate_plan(domain, problem, solution_plan(text, args.plan))
+    checked = None
+    if args.plan.endswith(".json") or text.lstrip().startswith("{"):
+        checked = read_solution(args.plan)
+        steps = [parse_step(s, args.plan, f"plan[{i}]") for i, s in enumerate(checked.raw.plan)]
+        report = validate_plan(domain, problem, steps)
     else:
         report = validate_plan(domain, problem, parse_plan(text, args.plan))
     violations = []
@@ -43,8 +45,8 @@ def run(args, ui) -> int:
         violations.append({"kind": "symbolic", "step": f.step, "line": f.line,
                            "action": f.action, "reason": f.reason, "text": f.describe()})
     geometry = None
-    if is_solution:
-        geometry, found = _geometric_violations(args.plan, domain, problem)
+    if checked is not None:
+        geometry, found = _geometric_violations(checked, domain, problem, args.domain)
         violations.extend({"kind": "geometric", "step": None, "line": None, "action": None,
                            "reason": v, "text": v} for v in found)
     valid = not violations
@@ -58,38 +60,18 @@ def run(args, ui) -> int:
     return ExitCode.OK if valid else ExitCode.NO_SOLUTION
 
 
-def solution_plan(text: str, path: str) -> list[str]:
-    """The `plan` of a solution.json, checked to be a list of strings."""
-    try:
-        data = json.loads(text)
-    except json.JSONDecodeError as err:
-        raise SolutionFileError(f"not valid JSON: {err.msg}", path, err.lineno, err.colno,
-                                source_line_at(text, err.lineno)) from None
-    if not isinstance(data, dict):
-        raise SolutionFileError("expected a JSON object (a solution.json)", path, 1, 1)
-    if "plan" not in data:
-        raise SolutionFileError("missing key: a solution.json needs `plan`", path, key="plan")
-    plan = data["plan"]
-    if not isinstance(plan, list):
-        raise SolutionFileError("expected a list of \"(action arg ...)\" strings", path,
-                                key="plan")
-    for i, step in enumerate(plan):
-        if not isinstance(step, str):
-            raise SolutionFileError(f"expected a string \"(action arg ...)\", found {step!r}",
-                                    path, key=f"plan[{i}]")
-    return plan
-
-
-def _geometric_violations(path, domain, problem) -> tuple[str, list[str]]:
+def _geometric_violations(checked, domain, problem, domain_path) -> tuple[str, list[str]]:
     """("checked", violations), or ("unavailable", []) without the geometric verifier."""
     try:
-        verify = importlib.import_module("tampcli.optimize.verify")
+        importlib.import_module("tampcli.optimize.verify")
     except ModuleNotFoundError as err:
         if err.name not in ("tampcli.optimize", "tampcli.optimize.verify"):
             raise
         return "unavailable", []
+    from tampcli.cli.validate_geometry import geometric_violations
+
     with _c_stdout_to_stderr():
-        found = list(verify.verify_solution_file(Path(path), domain, problem))
+        found = geometric_violations(checked, domain, problem, domain_path)
     return "checked", found
 
 

@@ -104,7 +104,8 @@ def test_joint_count_mismatch(cli, tmp_path):
                   robot={"model": "planar", "joints": ["x", "y", "z"]})
     run = cli("render", path, "--video", tmp_path / "v.mp4", *SMALL)
     assert run.code == 2
-    assert "3 joint values but the scene's robot has 2" in run.err
+    assert "robot.joints: unknown joint 'z': expected joints of the scene's robot (x, y)" \
+        in run.err
     assert not (tmp_path / "v.mp4").exists()
 
 

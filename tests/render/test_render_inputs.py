@@ -104,8 +104,8 @@ def _huge_int(data):
 # Malformed values that `solution.read` lets through and replay would trip on.
 MALFORMED = {
     "plan not a list": (lambda d: _set(d, "plan", 5), "plan", ["expected a list of strings"]),
-    "plan entry not a string": (lambda d: _set(d, "plan", [1]), "plan",
-                                ["entry 0 is not a string"]),
+    "plan entry not a string": (lambda d: _set(d, "plan", [1]), "plan[0]",
+                                ["expected a string", "found 1"]),
     "joints not a list": (lambda d: _set(d, "robot.joints", 7), "robot.joints",
                           ["expected a list of strings"]),
     "joints null": (lambda d: _set(d, "robot.joints", None), "robot.joints",
