@@ -137,14 +137,6 @@ def write(solution: Solution, path: str | Path) -> None:
         raise SolutionFileError(f"cannot write: {err.strerror}", str(path)) from None
 
 
-def read(path: str | Path) -> Solution:
-    """A solution.json as written; `solution_read.read_solution` has the checks
-    and the canonical form."""
-    from tampcli.solution_read import read_solution
-
-    return read_solution(path).raw
-
-
 def resolve_input(solution_path: str | Path, recorded: str | None) -> Path | None:
     """A path recorded in a solution: beside the solution file first, then the cwd."""
     if recorded is None:

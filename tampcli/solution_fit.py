@@ -5,7 +5,7 @@ tool link) and poses for exactly the scene's movable bodies. `render` and
 from __future__ import annotations
 
 from tampcli.errors import SolutionFileError
-from tampcli.solution_read import FINGER_JOINTS, SolutionFile
+from tampcli.solution_read import SolutionFile
 
 
 def check_fits_world(solution: SolutionFile, world, scene_path) -> None:
@@ -19,7 +19,7 @@ def check_fits_world(solution: SolutionFile, world, scene_path) -> None:
         raise SolutionFileError(f"{model!r} but the scene {scene_path} has a {scene_model!r} "
                                 "robot", path, key="robot.model")
     scene_joints = tuple(world.joint_names)
-    known = scene_joints + (FINGER_JOINTS if world.finger_joints else ())
+    known = scene_joints + world.finger_names
     unknown = [name for name in solution.raw.robot.get("joints", ()) if name not in known]
     if unknown:
         raise SolutionFileError(f"unknown joint {unknown[0]!r}: expected joints of the scene's "

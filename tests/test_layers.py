@@ -14,7 +14,7 @@ LAYERS = (
     ("task",),
     ("search",),
     ("geometry",),
-    ("solution",),
+    ("solution", "solution_read", "solution_fit"),
     ("optimize",),
     ("bnb",),
     ("render",),

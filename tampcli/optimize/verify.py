@@ -256,8 +256,9 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
     from tampcli.optimize.problem import lower
     from tampcli.optimize.result import TrajectoryResult
     from tampcli.pddl import ast, parser
+    from tampcli.solution_read import read_solution
 
-    sol = solution_mod.read(path)
+    sol = read_solution(path).raw
     if sol.status != "solved":
         return [f"the solution's status is {sol.status}: {sol.reason or 'no reason given'}"]
     scene_path = solution_mod.resolve_input(path, sol.scene)

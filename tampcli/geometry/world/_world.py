@@ -183,6 +183,11 @@ class World:
         return tuple(b.name for b in self.scene.bodies)
 
     @property
+    def finger_names(self) -> tuple[str, ...]:
+        """The gripper's finger joints (not in q: they open and close, never plan)."""
+        return PANDA_FINGERS if self._fingers else ()
+
+    @property
     def movable_names(self) -> tuple[str, ...]:
         return tuple(b.name for b in self.scene.bodies if not b.fixed)
 
