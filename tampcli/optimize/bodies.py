@@ -16,6 +16,8 @@ from tampcli.geometry import transforms
 
 # Resting contact tolerance (SPEC: "its bottom rests on that face (within 5 mm)").
 REST_TOLERANCE = 0.005
+# How far apart `verify` still calls a tool and the object it grasps or pushes touching (m).
+TOUCH_TOLERANCE = 2e-3
 
 
 @dataclass(frozen=True)

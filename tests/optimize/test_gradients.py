@@ -13,6 +13,7 @@ from tampcli.optimize.init import final_guess, keyframe_guess
 from tampcli.optimize.path import phase_layout, phase_rows_fn
 from tampcli.optimize.problem import lower
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
+from tampcli.optimize.values import placement_blocks
 
 from .helpers import ops
 
@@ -83,7 +84,7 @@ def test_final_rows_place_and_stack(wall):
     assert problem.error is None
     layout = final_layout(problem)
     vals, origins = final_guess(problem)
-    x = layout.pack(vals) + np.random.default_rng(0).normal(0, 0.03, layout.size)
+    x = layout.pack(placement_blocks(vals)) + np.random.default_rng(0).normal(0, 0.03, layout.size)
     _check(lambda v: final_rows(problem, v, origins), layout, x)
 
 
@@ -94,7 +95,7 @@ def test_keyframe_rows_without_collisions(wall):
     vals, choices = keyframe_guess(problem, placements, world.start,
                                    np.random.default_rng(0))
     layout = keyframe_layout(problem)
-    x = layout.pack(vals) + np.random.default_rng(1).normal(0, 0.05, layout.size)
+    x = layout.pack(vals.blocks()) + np.random.default_rng(1).normal(0, 0.05, layout.size)
     kin = Kinematics(world)
     eq, _ = _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker,
                                            world.start, collisions=False), layout, x)
@@ -108,7 +109,7 @@ def test_keyframe_rows_planar_push_with_grip_parameter(planar):
     placements, _ = final_guess(problem)
     vals, choices = keyframe_guess(problem, placements, world.start, np.random.default_rng(0))
     layout = keyframe_layout(problem)
-    x = layout.pack(vals) + np.random.default_rng(2).normal(0, 0.02, layout.size)
+    x = layout.pack(vals.blocks()) + np.random.default_rng(2).normal(0, 0.02, layout.size)
     kin = Kinematics(world)
     _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start),
            layout, x, h=1e-6, tol=1e-5)
@@ -172,13 +173,13 @@ def test_keyframe_rows_stacking_on_a_moved_cube():
             0.05 + 0.045 + 0.02)
         layout = final_layout(problem)
         vals, origins = final_guess(problem)
-        x = layout.pack(vals) + np.random.default_rng(3).normal(0, 0.01, layout.size)
+        x = layout.pack(placement_blocks(vals)) + np.random.default_rng(3).normal(0, 0.01, layout.size)
         _check(lambda v: final_rows(problem, v, origins), layout, x)
         placements, _ = final_guess(problem)
         kvals, choices = keyframe_guess(problem, placements, world.start,
                                         np.random.default_rng(0))
         klayout = keyframe_layout(problem)
-        x = klayout.pack(kvals) + np.random.default_rng(4).normal(0, 0.02, klayout.size)
+        x = klayout.pack(kvals.blocks()) + np.random.default_rng(4).normal(0, 0.02, klayout.size)
         kin = Kinematics(world)
         _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
                                        collisions=False), klayout, x)
@@ -195,7 +196,7 @@ def test_keyframe_rows_panda_push(wall):
     placements, _ = final_guess(problem)
     vals, choices = keyframe_guess(problem, placements, world.start, np.random.default_rng(0))
     layout = keyframe_layout(problem)
-    x = layout.pack(vals) + np.random.default_rng(5).normal(0, 0.03, layout.size)
+    x = layout.pack(vals.blocks()) + np.random.default_rng(5).normal(0, 0.03, layout.size)
     kin = Kinematics(world)
     _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
                                    collisions=False), layout, x)
