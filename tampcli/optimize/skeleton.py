@@ -40,7 +40,7 @@ class MotionPhase:
     step: int  # the step that follows (grasp/place/push approach) or owns it (move/push)
     attached: str | None  # held or pushed object (moves with the tool)
     grip_step: int | None  # step whose grip relates `attached` to the tool
-    kind: str  # "free" | "carry" | "push"
+    kind: str  # "free", "carry", or a kind's own motion (a push's pushing)
     enter_contact: frozenset[str] = frozenset()  # bodies allowed to touch in the last segment
     leave_contact: frozenset[str] = frozenset()  # ... in the first segment
     sliding: frozenset[str] = frozenset()  # bodies `attached` slides on (push; planar carry)

@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from tampcli.optimize.bodies import REST_TOLERANCE
-from tampcli.optimize.grips import Grip
+from tampcli.optimize.grips import Grip, SideGrip
 from tampcli.optimize.values import NO_CHOICE
 
 PANDA_REACH = 0.855  # m, from the shoulder
@@ -26,7 +26,7 @@ def grip_of(problem, step, choices) -> Grip:
         base_z = float(problem.scene.robot.base_pose[2, 3])
         rho = problem.scene.robot.radius + max(info.half[0], info.half[1])
         z = choice.z if choice.z is not None else info.pose[2]
-        return Grip("side", (0.0, 0.0, z - base_z), rho=rho,
+        return SideGrip((0.0, 0.0, z - base_z), rho=rho,
                     yaw=choice.yaw if choice.yaw is not None else info.pose[3])
     return step.kind.grip(problem, step, choice)
 

@@ -52,7 +52,7 @@ class FrameState:
 class _Item:
     """A stretch of the timeline: a move along segment (i, i+1), or a hold."""
 
-    kind: str  # "move" | "hold"
+    moving: bool  # along a segment of the trajectory, or holding still
     phase: int  # index into phases; -1 = before the first, len(phases) = after the last
     index: int  # waypoint (start of the segment for a move)
     duration: float
@@ -150,18 +150,18 @@ class Replay:
             else 0.0
 
     def _timeline(self, pause: float) -> list[_Item]:
-        items = [_Item("hold", -1, 0, pause)]
+        items = [_Item(False, -1, 0, pause)]
         for k, phase in enumerate(self.phases):
             if phase.action is not None:
-                items.append(_Item("hold", k, phase.start, pause))
+                items.append(_Item(False, k, phase.start, pause))
             for i in range(phase.start, phase.end):
                 length = float(np.linalg.norm(self.q[i + 1] - self.q[i]))
-                items.append(_Item("move", k, i, length / self.speed))
+                items.append(_Item(True, k, i, length / self.speed))
         if not self.phases:  # a bare trajectory: one motion through it
             for i in range(len(self.q) - 1):
                 length = float(np.linalg.norm(self.q[i + 1] - self.q[i]))
-                items.append(_Item("move", 0, i, length / self.speed))
-        items.append(_Item("hold", len(self.phases), len(self.q) - 1, pause))
+                items.append(_Item(True, 0, i, length / self.speed))
+        items.append(_Item(False, len(self.phases), len(self.q) - 1, pause))
         return [item for item in items if item.duration > 0.0] or [items[0]]
 
     # -- querying ---------------------------------------------------------------
@@ -181,7 +181,7 @@ class Replay:
         item = self.items[j]
         start = self._ends[j] - item.duration
         alpha = 0.0 if item.duration == 0 else min(max((t - start) / item.duration, 0.0), 1.0)
-        if item.kind == "move":
+        if item.moving:
             q = (1.0 - alpha) * self.q[item.index] + alpha * self.q[item.index + 1]
             return self._state(t, q, item.phase, after=False)
         # An instantaneous action switches half-way through its pause; the

@@ -8,7 +8,7 @@ no witness pair switches within the step.
 import numpy as np
 import pytest
 
-from tampcli.optimize.grips import Grip, Kinematics, held_pose
+from tampcli.optimize.grips import Kinematics, SideGrip, TopGrip, YawGrip, held_pose
 from tampcli.optimize.init import final_guess, keyframe_guess
 from tampcli.optimize.path import phase_layout, phase_rows_fn
 from tampcli.optimize.problem import lower
@@ -56,9 +56,9 @@ def test_held_pose_jacobians(wall, kind):
     _, _, world = wall
     kin = Kinematics(world)
     rng = np.random.default_rng(1)
-    grip = {"top": Grip("top", (0.0, 0.0, 0.01), psi=0.7),
-            "push": Grip("push", (-0.04, 0.0, 0.0)),
-            "side": Grip("side", (0.0, 0.0, 0.02), rho=0.08, yaw=0.3)}[kind]
+    grip = {"top": TopGrip((0.0, 0.0, 0.01), psi=0.7),
+            "push": YawGrip((-0.04, 0.0, 0.0)),
+            "side": SideGrip((0.0, 0.0, 0.02), rho=0.08, yaw=0.3)}[kind]
     q = rng.uniform(world.lower, world.upper)
     t = 0.4
 

@@ -5,8 +5,8 @@ import pytest
 from hypothesis import given
 from hypothesis import strategies as st
 
-from tampcli.optimize.options import OptimizeOptions
 from tampcli.optimize.layout import Layout
+from tampcli.optimize.options import OptimizeOptions
 from tampcli.optimize.problem import lower
 from tampcli.optimize.solve import solve
 

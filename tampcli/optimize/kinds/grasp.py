@@ -15,7 +15,7 @@ import numpy as np
 from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import REST_TOLERANCE, TOUCH_TOLERANCE
-from tampcli.optimize.grips import Grip
+from tampcli.optimize.grips import TopGrip
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
@@ -65,8 +65,8 @@ class Grasp(ModeKind):
         info = problem.bodies[step.obj]
         clear = 2 * info.half[2] - PANDA_FINGERTIP - problem.options.margin - REST_TOLERANCE
         depth = float(np.clip(min(PANDA_FINGER_DEPTH, clear), MIN_DEPTH, info.half[2]))
-        return Grip("top", (0.0, 0.0, info.half[2] - depth),
-                    psi=choice.psi if choice.psi is not None else 0.0)
+        return TopGrip((0.0, 0.0, info.half[2] - depth),
+                       psi=choice.psi if choice.psi is not None else 0.0)
 
     def final_rows(self, walk, step):
         walk.state.pop(step.obj, None)

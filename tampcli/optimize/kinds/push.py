@@ -17,7 +17,7 @@ from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import TOUCH_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
-from tampcli.optimize.grips import Grip
+from tampcli.optimize.grips import YawGrip
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
@@ -56,7 +56,7 @@ class Push(ModeKind):
     def grip(self, problem, step, choice):
         info = problem.bodies[step.obj]
         rho = max(info.half[0], info.half[1]) + PUSH_STANDOFF
-        return Grip("push", (-rho, 0.0, 0.0))
+        return YawGrip((-rho, 0.0, 0.0))
 
     def final_rows(self, walk, step):
         walk.place(step)
