@@ -11,8 +11,12 @@ symbolic actions are instantaneous. Each motion phase ends at a keyframe
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from tampcli.optimize.bodies import REST_TOLERANCE
+
+if TYPE_CHECKING:
+    from tampcli.optimize.kinds.base import ModeKind
 
 
 @dataclass(frozen=True)
@@ -21,7 +25,7 @@ class Step:
 
     index: int
     name: str  # "(pick a table)"
-    kind: object  # the action's mode kind (tampcli.optimize.kinds.ModeKind)
+    kind: ModeKind  # what the action's mode means, through every stage
     obj: str | None = None
     target: str | None = None  # place: region or body; push/move: region (or None)
     support: str | None = None  # the body under the object after the action (place/push)

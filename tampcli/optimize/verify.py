@@ -24,6 +24,9 @@ from tampcli.optimize.problem import TrajectoryProblem
 PENETRATION = 1e-3  # m: deeper is a collision (FCL's own accuracy is ~1e-4)
 RIGID = 2e-3  # m / rad: a held object's drift relative to the tool
 LIMIT = 1e-6  # rad / m beyond a joint limit
+STILL = 1e-6  # m + rad: a resting object moving less than this between phases has not moved
+UPRIGHT = 1e-3  # 1 - cos(tilt) of an object called upright
+INSIDE = 1e-3  # m: a footprint or centre this far outside its target is still inside
 
 
 def _pose(v) -> np.ndarray:
@@ -132,7 +135,7 @@ def _check_objects(problem: TrajectoryProblem, result) -> list[str]:
                 if drift > RIGID:
                     out.append(f"{phase.action or f'motion phase {pi}'}: {name} moves "
                                f"relative to the tool by {100 * drift:.1f} cm")
-            elif _distance(vs[pi], vs[pi + 1]) > 1e-6:
+            elif _distance(vs[pi], vs[pi + 1]) > STILL:
                 what = ("jumps" if phase.start == phase.end else "moves but is not attached")
                 out.append(f"{phase.action or f'motion phase {pi}'}: {name} {what} "
                            f"({100 * _distance(vs[pi], vs[pi + 1]):.1f} cm)")
@@ -186,7 +189,7 @@ def _distance(a, b) -> float:
 def _check_rest(problem, step, pose, poses, boundary, regions) -> list[str]:
     out = []
     info = problem.bodies[step.obj]
-    if pose[2, 2] < 1 - 1e-3:
+    if pose[2, 2] < 1 - UPRIGHT:
         out.append(f"{step.name}: {step.obj} is not upright")
     support = problem.bodies[step.support]
     if step.support in poses:
@@ -203,12 +206,12 @@ def _check_rest(problem, step, pose, poses, boundary, regions) -> list[str]:
         corners = _footprint(info, pose)
         outside = max(float(np.max(np.asarray(r.lower) - corners)),
                       float(np.max(corners - np.asarray(r.upper))))
-        if outside > 1e-3:
+        if outside > INSIDE:
             out.append(f"{step.name}: footprint outside region {r.name} by "
                        f"{100 * outside:.1f} cm")
     elif step.target is not None:
         local = s_pose[:3, :3].T @ (pose[:3, 3] - s_pose[:3, 3])
-        if np.any(np.abs(local[:2]) > np.array(support.half[:2]) + 1e-3):
+        if np.any(np.abs(local[:2]) > np.array(support.half[:2]) + INSIDE):
             out.append(f"{step.name}: {step.obj}'s centre is off {step.target}")
     return out
 
