@@ -14,29 +14,26 @@ from pathlib import Path
 
 from tampcli.errors import SceneError, source_line_at
 from tampcli.geometry.tomlsrc import read_toml
+from tampcli.optimize.kinds import KINDS, SYMBOLIC
 from tampcli.pddl import ast
 
-KINDS = ("grasp", "place", "push", "move", "none")
-# Which roles each kind takes; the first tuple is required, the second optional.
-_ROLES = {
-    "grasp": (("object",), ()),
-    "place": (("object", "on"), ()),
-    "push": (("object", "to"), ()),
-    "move": ((), ("to",)),
-    "none": ((), ()),
-}
 _KEYS = ("mode", "object", "on", "to")
 
 
 @dataclass(frozen=True)
 class Mode:
     action: str
-    kind: str  # grasp | place | push | move | none
+    kind: str  # a key of optimize.kinds.KINDS
     object: str | None = None  # "?b" or an object name
     on: str | None = None
     to: str | None = None
     params: tuple[str, ...] = ()  # the action's parameter names, in order
     line: int | None = field(default=None, compare=False)
+
+    @property
+    def geometric(self) -> bool:
+        """The action moves something (its kind is not symbolic)."""
+        return KINDS[self.kind].geometric
 
     def bind(self, args) -> dict[str, str | None]:
         """{"object": ..., "on": ..., "to": ...} for a grounded action's arguments."""
@@ -70,7 +67,7 @@ class Modes(Mapping):
         try:
             return self[action]
         except KeyError:
-            return Mode(action, "none")
+            return Mode(action, SYMBOLIC.name)
 
 
 def load_modes(path: str | Path, domain: ast.Domain) -> Modes:
@@ -95,10 +92,10 @@ def load_modes(path: str | Path, domain: ast.Domain) -> Modes:
         if kind is None:
             raise src.error(f"missing key 'mode' (one of {', '.join(KINDS)})", action_name,
                             name=f"{action_name}.mode")
-        if kind not in KINDS:
+        if not isinstance(kind, str) or kind not in KINDS:
             raise src.error(f"unknown mode {kind!r}; expected one of {', '.join(KINDS)}",
                             action_name, 0, "mode")
-        required, optional = _ROLES[kind]
+        required, optional = KINDS[kind].required, KINDS[kind].optional
         params = tuple(p.name for p in action.params)
         values = {}
         for role in ("object", "on", "to"):

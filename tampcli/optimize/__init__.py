@@ -7,10 +7,13 @@ solved with SLSQP and exact Jacobians, in three stages of growing cost:
     solve.solve(problem, "final" | "keyframes" | "path", warm) -> TrajectoryResult
     verify.verify(problem, result) -> [violations in words]
 
-Modules: options (OptimizeOptions), problem (lowering, variable layout),
-bodies (extents, supports), grips (tool frame, held objects), expr (values
-with Jacobians over named variable blocks), constraints (placement, grasp,
-reach rows), collide (collision rows), stages (final / keyframe NLPs), path
-(per-phase path NLPs, via points), init (IK keyframes), nlp (the SLSQP
-driver), assemble (trajectory, phases, object poses), verify, result.
+Modules: options (OptimizeOptions), problem (lowering), skeleton (steps,
+motion phases), kinds (what each mode kind means, through every stage),
+layout (the NLPs' blocks of variables), values (keyframes, grip choices and
+placements handed between stages), bodies (extents, supports), grips (tool
+frame, held objects), expr (values with Jacobians over named variable
+blocks), constraints (placement, grasp, reach rows), collide (collision
+rows), stages (final / keyframe NLPs), path (per-phase path NLPs, via
+points), init (IK keyframes), nlp (the SLSQP driver), assemble (trajectory,
+phases, object poses), verify, result.
 """

@@ -2,7 +2,8 @@
 
 The object held from a grasp keeps the pose it had relative to the tool at
 the grasp keyframe (computed from the numbers, so it does not jump when
-picked up); it ends where the tool leaves it.
+picked up); it ends where the tool leaves it. Each step's kind says what its
+mode switch does (kinds/*.py: switch, phases).
 """
 
 from __future__ import annotations
@@ -30,100 +31,105 @@ class MotionContext:
     rest_z: float | None  # push: height of the pushed object
 
 
-def walk(problem: TrajectoryProblem, kf: dict, choices: dict, start) -> list[MotionContext]:
-    world = problem.world
-    resting = {n: pose_matrix(*i.pose) for n, i in problem.bodies.items() if not i.fixed}
-    moved: set[str] = set()
-    grasp = None
+class MotionWalk:
+    """Where every object rests and how the attached one hangs, keyframe by keyframe."""
+
+    def __init__(self, problem: TrajectoryProblem, start):
+        self.world = problem.world
+        self.resting = {n: pose_matrix(*i.pose) for n, i in problem.bodies.items()
+                        if not i.fixed}
+        self.moved: set[str] = set()
+        self.grasp = None
+        self.q_prev = np.asarray(start, dtype=float)
+
+    def tool(self) -> np.ndarray:
+        return self.world.tool_pose(self.q_prev)
+
+    def release(self, obj: str) -> None:
+        """obj rests where the tool leaves it."""
+        self.resting[obj] = self.tool() @ self.grasp
+        self.moved.add(obj)
+
+
+def walk(problem: TrajectoryProblem, keyframes, choices, start) -> list[MotionContext]:
+    """`keyframes`: values.Keyframes; `choices`: step index -> values.GripChoice."""
+    w = MotionWalk(problem, start)
     out: list[MotionContext] = []
-    q_prev = np.asarray(start, dtype=float)
-
-    def t_of(step_index, grip):
-        return float(kf[f"g{step_index}"][0]) if grip.has_param else 0.0
-
     for step in problem.steps:
-        if step.kind == "none":
-            continue
         for k in step.keyframes:
             m = problem.motions[k]
-            q = np.asarray(kf[f"k{k}"], dtype=float)
-            if m.kind == "push":
-                tool = world.tool_pose(q_prev)
-                grasp = transforms.pose_inverse(tool) @ resting[step.obj]
+            q = np.asarray(keyframes.q[k], dtype=float)
+            if m.pushes:
+                w.grasp = transforms.pose_inverse(w.tool()) @ w.resting[step.obj]
             held = None
             if m.attached is not None:
                 gstep = problem.steps[m.grip_step]
                 grip = grip_of(problem, gstep, choices)
-                held = Held(m.attached, grip, t_of(gstep.index, grip), None, grasp)
-            out.append(MotionContext(k, q_prev, q, held,
-                                     grasp if m.attached is not None else None,
-                                     {n: resting[n] for n in moved},
-                                     step.rest_z if m.kind == "push" else None))
-            q_prev = q
-        tool = world.tool_pose(q_prev)
-        if step.kind == "grasp":
-            grasp = transforms.pose_inverse(tool) @ resting[step.obj]
-        elif step.kind in ("place", "push"):
-            resting[step.obj] = tool @ grasp
-            moved.add(step.obj)
-            if step.kind == "place":
-                grasp = None
+                t = keyframes.grip[gstep.index] if grip.has_param else 0.0
+                held = Held(m.attached, grip, t, None, w.grasp)
+            out.append(MotionContext(k, w.q_prev, q, held,
+                                     w.grasp if m.attached is not None else None,
+                                     {n: w.resting[n] for n in w.moved},
+                                     step.rest_z if m.pushes else None))
+            w.q_prev = q
+        step.kind.switch(w, step)
     return out
+
+
+class PhaseWalk:
+    """The trajectory's phases and the objects' poses at their boundaries, as they build."""
+
+    def __init__(self, problem: TrajectoryProblem, traj: np.ndarray):
+        self.world = problem.world
+        self.traj = traj
+        self.resting = {n: pose_matrix(*i.pose) for n, i in problem.bodies.items()
+                        if not i.fixed}
+        self.attached: tuple[str, np.ndarray] | None = None
+        self.phases: list[Phase] = []
+        self.poses = {n: [transforms.xyzquat_from_pose(t)] for n, t in self.resting.items()}
+        self.grasps = {}
+        self.idx = 0
+
+    def tool(self) -> np.ndarray:
+        return self.world.tool_pose(self.traj[self.idx])
+
+    def boundary(self) -> None:
+        for n in self.poses:
+            if self.attached is not None and self.attached[0] == n:
+                t = self.world.tool_pose(self.traj[self.idx]) @ self.attached[1]
+            else:
+                t = self.resting[n]
+            self.poses[n].append(transforms.xyzquat_from_pose(t))
+
+    def instant(self, step) -> None:
+        """The step as a phase of no duration (a mode switch, a symbolic action)."""
+        self.phases.append(Phase(step.name, self.idx, self.idx,
+                                 self.attached[0] if self.attached else None))
+        self.boundary()
+
+    def release(self, obj: str) -> None:
+        self.resting[obj] = self.tool() @ self.attached[1]
+        self.attached = None
 
 
 def assemble(problem: TrajectoryProblem, start, waypoints: dict, contexts: list[MotionContext]):
     """(trajectory (N, n), phases, object poses per phase boundary, grasps used)."""
-    world = problem.world
     T = problem.options.waypoints
     traj = [np.asarray(start, dtype=float)]
     ctx_of = {c.index: c for c in contexts}
     for k in range(problem.n_keyframes):
         traj.extend(waypoints[k])
         traj.append(ctx_of[k].q_b)
-    traj = np.array(traj)
-    resting = {n: pose_matrix(*i.pose) for n, i in problem.bodies.items() if not i.fixed}
-    movable = list(resting)
-    attached: tuple[str, np.ndarray] | None = None
-    phases: list[Phase] = []
-    poses = {n: [transforms.xyzquat_from_pose(resting[n])] for n in movable}
-    grasps = {}
-    idx = 0
-
-    def boundary(at: int):
-        for n in movable:
-            if attached is not None and attached[0] == n:
-                t = world.tool_pose(traj[at]) @ attached[1]
-            else:
-                t = resting[n]
-            poses[n].append(transforms.xyzquat_from_pose(t))
-
+    w = PhaseWalk(problem, np.array(traj))
     for step in problem.steps:
-        if step.kind == "none":
-            phases.append(Phase(step.name, idx, idx, attached[0] if attached else None))
-            boundary(idx)
-            continue
         for k in step.keyframes:
             c = ctx_of[k]
             m = problem.motions[k]
-            if m.kind == "push":
-                attached = (m.attached, c.grasp)
-                grasps[m.attached] = c.grasp
-                phases.append(Phase(step.name, idx, idx + T, m.attached))
-            elif step.kind == "move":
-                phases.append(Phase(step.name, idx, idx + T, m.attached))
-            else:
-                phases.append(Phase(None, idx, idx + T, m.attached))
-            idx += T
-            boundary(idx)
-        tool = world.tool_pose(traj[idx])
-        if step.kind == "grasp":
-            g = transforms.pose_inverse(tool) @ resting[step.obj]
-            attached = (step.obj, g)
-            grasps[step.obj] = g
-        elif step.kind in ("place", "push"):
-            resting[step.obj] = tool @ attached[1]
-            attached = None
-        if step.kind in ("grasp", "place"):
-            phases.append(Phase(step.name, idx, idx, attached[0] if attached else None))
-            boundary(idx)
-    return traj, tuple(phases), poses, grasps
+            if m.pushes:
+                w.attached = (m.attached, c.grasp)
+                w.grasps[m.attached] = c.grasp
+            w.phases.append(Phase(step.name if m.own else None, w.idx, w.idx + T, m.attached))
+            w.idx += T
+            w.boundary()
+        step.kind.phases(w, step)
+    return w.traj, tuple(w.phases), w.poses, w.grasps

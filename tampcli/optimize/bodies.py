@@ -16,6 +16,8 @@ from tampcli.geometry import transforms
 
 # Resting contact tolerance (docs/formats.md, "Resting contact"): bottom to top face.
 REST_TOLERANCE = 0.005
+# How far apart `verify` still calls a tool and the object it grasps or pushes touching (m).
+TOUCH_TOLERANCE = 2e-3
 
 
 @dataclass(frozen=True)

@@ -10,6 +10,7 @@ so every held quantity has an exact Jacobian from the tool's (6, n) one.
 from __future__ import annotations
 
 import math
+from abc import ABC, abstractmethod
 from dataclasses import dataclass
 
 import numpy as np
@@ -71,40 +72,19 @@ def skew(v) -> np.ndarray:
 
 
 @dataclass(frozen=True)
-class Grip:
+class Grip(ABC):
     """Object frame in the tool frame as a function of an optional parameter t.
 
-    kind: "top" (arm, fixed yaw offset psi), "push" (arm, t = yaw offset),
-    "side" (planar suction, t = contact angle).
+    One subclass per way of holding: TopGrip (arm, fixed yaw offset),
+    YawGrip (arm, t = yaw offset), SideGrip (planar suction, t = contact angle).
     """
 
-    kind: str
     c0: tuple[float, float, float]  # centre when it does not depend on t
-    psi: float = 0.0  # top grasp: object yaw minus tool yaw
-    rho: float = 0.0  # side: centre distance from the robot axis
-    yaw: float = 0.0  # side: object yaw (the planar robot does not turn)
+    has_param = False  # t is a variable of the keyframe NLP
 
-    @property
-    def has_param(self) -> bool:
-        return self.kind in ("push", "side")
-
+    @abstractmethod
     def parts(self, t: float):
         """c, G (3x3 columns gx gy gz), dc/dt, dG/dt."""
-        if self.kind == "side":
-            ct, st = math.cos(t), math.sin(t)
-            c = np.array([self.rho * ct, self.rho * st, self.c0[2]])
-            dc = np.array([-self.rho * st, self.rho * ct, 0.0])
-            cy, sy = math.cos(self.yaw), math.sin(self.yaw)
-            G = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
-            return c, G, dc, np.zeros((3, 3))
-        psi = t if self.kind == "push" else self.psi
-        cp, sp = math.cos(psi), math.sin(psi)
-        # Tool z points down; the object stays upright: its axes in the tool frame.
-        G = np.array([[cp, -sp, 0.0], [-sp, -cp, 0.0], [0.0, 0.0, -1.0]])
-        dG = np.array([[-sp, -cp, 0.0], [-cp, sp, 0.0], [0.0, 0.0, 0.0]])
-        if self.kind == "top":
-            dG = np.zeros((3, 3))
-        return np.array(self.c0), G, np.zeros(3), dG
 
     def matrix(self, t: float) -> np.ndarray:
         c, G, _, _ = self.parts(t)
@@ -112,6 +92,53 @@ class Grip:
         out[:3, :3] = G
         out[:3, 3] = c
         return out
+
+
+def _down(psi: float):
+    """Tool z points down, the object stays upright: its axes in the tool frame, and d/dpsi."""
+    cp, sp = math.cos(psi), math.sin(psi)
+    G = np.array([[cp, -sp, 0.0], [-sp, -cp, 0.0], [0.0, 0.0, -1.0]])
+    dG = np.array([[-sp, -cp, 0.0], [-cp, sp, 0.0], [0.0, 0.0, 0.0]])
+    return G, dG
+
+
+@dataclass(frozen=True)
+class TopGrip(Grip):
+    """The arm's fingers from above, at a fixed yaw offset psi (object yaw minus tool yaw)."""
+
+    psi: float = 0.0
+
+    def parts(self, t: float):
+        G, _ = _down(self.psi)
+        return np.array(self.c0), G, np.zeros(3), np.zeros((3, 3))
+
+
+@dataclass(frozen=True)
+class YawGrip(Grip):
+    """The arm against the object's side (a push): the yaw offset is the parameter t."""
+
+    has_param = True
+
+    def parts(self, t: float):
+        G, dG = _down(t)
+        return np.array(self.c0), G, np.zeros(3), dG
+
+
+@dataclass(frozen=True)
+class SideGrip(Grip):
+    """The planar robot's rim on the object's side: t is the contact angle."""
+
+    rho: float = 0.0  # centre distance from the robot axis
+    yaw: float = 0.0  # object yaw (the planar robot does not turn)
+    has_param = True
+
+    def parts(self, t: float):
+        ct, st = math.cos(t), math.sin(t)
+        c = np.array([self.rho * ct, self.rho * st, self.c0[2]])
+        dc = np.array([-self.rho * st, self.rho * ct, 0.0])
+        cy, sy = math.cos(self.yaw), math.sin(self.yaw)
+        G = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
+        return c, G, dc, np.zeros((3, 3))
 
 
 @dataclass(frozen=True)

@@ -14,10 +14,13 @@ from __future__ import annotations
 import numpy as np
 
 from tampcli.optimize import constraints as C
+from tampcli.optimize.bodies import REST_TOLERANCE
 from tampcli.optimize.collide import Held, body_matrices, contact_rows, held_spec, row_keys
 from tampcli.optimize.expr import PoseX, held_posex
 from tampcli.optimize.grips import held_pose
-from tampcli.optimize.problem import Layout, MotionPhase, TrajectoryProblem
+from tampcli.optimize.layout import Layout, waypoint_block
+from tampcli.optimize.problem import TrajectoryProblem
+from tampcli.optimize.skeleton import MotionPhase
 from tampcli.optimize.stages import Rows
 
 
@@ -27,7 +30,7 @@ def pose_of_matrix(t) -> PoseX:
 
 
 def phase_layout(problem: TrajectoryProblem, T: int) -> Layout:
-    return Layout(tuple((f"w{i}", problem.n) for i in range(1, T)))
+    return Layout(tuple((waypoint_block(i), problem.n) for i in range(1, T)))
 
 
 def samples(T: int, checks: int):
@@ -48,7 +51,8 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed).
 
     `keep(tau) -> bool` selects the sample points that get collision rows
-    (all when None).
+    (all when None). `rest_z`: the height a pushed object keeps (None: nothing
+    is pushed).
     """
     opts = problem.options
     layout = phase_layout(problem, T)
@@ -58,7 +62,7 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     n = problem.n
 
     def block(i):
-        return f"w{i}" if 0 < i < T else None
+        return waypoint_block(i) if 0 < i < T else None
 
     ignores = [allowed_contacts(m, tau, T) for tau, _, _ in pts]
     weights = [[(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
@@ -75,17 +79,17 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         d = np.diff(qs, axis=0)
         rows.cost = float(np.sum(d * d))
         for i in range(1, T):
-            rows.cost_grad[f"w{i}"] = 2.0 * (d[i - 1] - d[i])
+            rows.cost_grad[waypoint_block(i)] = 2.0 * (d[i - 1] - d[i])
         samples_q = (1 - frac) * qs[where] + frac * qs[where + 1]
         contacts = checker.distances_many(samples_q, matrices, spec, ignores, opts.activation)
         for q, found, wts in zip(samples_q, contacts, weights, strict=True):
             frame = kin.frame(q) if held is not None and held.t_block else None
             contact_rows(rows.ineq, label, found, wts, frame, held, poses, keys,
                          opts.activation, opts.margin)
-        if m.kind == "push" and not problem.planar:
+        if rest_z is not None and not problem.planar:
             for i in range(1, T):
                 frame = kin.frame(qs[i])
-                H = held_posex(held_pose(frame, held.grip, held.t), f"w{i}", None)
+                H = held_posex(held_pose(frame, held.grip, held.t), waypoint_block(i), None)
                 C.upright(rows.eq, label, H, held.name)
                 C.rest_height(rows.eq, label, H, rest_z, "its support")
         return rows
@@ -166,7 +170,8 @@ def _planar_detour(problem, q_a, q_b, T, moved) -> np.ndarray:
     h = problem.scene.robot.height / 2
     for name, info in problem.bodies.items():
         centre = moved[name][:3, 3] if name in moved else np.array(info.pose[:3])
-        if centre[2] + info.half[2] < base_z - h + 0.005 or centre[2] - info.half[2] > base_z + h:
+        if (centre[2] + info.half[2] < base_z - h + REST_TOLERANCE
+                or centre[2] - info.half[2] > base_z + h):
             continue
         rel = centre[:2] - q_a
         along = rel @ u

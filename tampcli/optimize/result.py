@@ -6,6 +6,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from tampcli.optimize.values import Keyframes
+
 STATUSES = ("solved", "infeasible", "limit")
 STAGES = ("final", "keyframes", "path")
 
@@ -40,9 +42,10 @@ class TrajectoryResult:
     trajectory: np.ndarray | None = field(default=None, repr=False)
     phases: tuple = ()  # tampcli.solution.Phase
     object_poses: dict = field(default_factory=dict, repr=False)  # name -> [7-vector]
-    keyframes: dict = field(default_factory=dict, repr=False)  # block -> values (warm starts)
-    choices: dict = field(default_factory=dict, repr=False)  # discrete grip choices
-    placements: dict = field(default_factory=dict, repr=False)  # "p<step>" -> (x, y, yaw)
+    # Warm starts for a later stage or a longer skeleton:
+    keyframes: Keyframes = field(default_factory=Keyframes, repr=False)
+    choices: dict = field(default_factory=dict, repr=False)  # step -> values.GripChoice
+    placements: dict = field(default_factory=dict, repr=False)  # step -> values.Placement
     grasps: dict = field(default_factory=dict, repr=False)  # object -> 4x4 in tool frame
 
     def __post_init__(self):

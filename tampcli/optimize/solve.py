@@ -19,12 +19,14 @@ from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.grips import Kinematics
 from tampcli.optimize.init import final_guess, keyframe_guess
+from tampcli.optimize.layout import keyframe_block
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, solve_nlp
 from tampcli.optimize.options import OptimizeOptions
 from tampcli.optimize.path import phase_rows_fn, sample_clearance, via_points
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import STAGES, TrajectoryResult
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
+from tampcli.optimize.values import Keyframes, placement_blocks, placements_from_blocks
 from tampcli.optimize.world_state import reach_of
 
 GRIP_BOUND = 4 * math.pi
@@ -91,7 +93,7 @@ def _too_small(problem) -> str | None:
     """An object whose footprint fits its target region in no orientation (proved)."""
     regions = {r.name: r for r in problem.scene.regions}
     for step in problem.steps:
-        if step.kind in ("place", "push") and step.target in regions:
+        if step.kind.places and step.target in regions:
             w, h = regions[step.target].size
             info = problem.bodies[step.obj]
             a, b = 2 * info.half[0], 2 * info.half[1]
@@ -115,7 +117,7 @@ def _beyond_reach(problem) -> str | None:
     centre, reach = reach_of(problem)
     regions = {r.name: r for r in problem.scene.regions}
     for step in problem.steps:
-        if step.kind in ("place", "push") and step.target in regions:
+        if step.kind.places and step.target in regions:
             region = regions[step.target]
             info = problem.bodies[step.obj]
             nearest = np.clip(centre[:2], region.lower, region.upper)
@@ -132,13 +134,13 @@ def _placements(run: _Run, warm):
     problem = run.problem
     layout = final_layout(problem)
     prior = warm.placements if warm is not None else None
-    vals, origins = final_guess(problem, prior)
+    placements, origins = final_guess(problem, prior)
     if layout.size == 0:
         return None, {}
     bounds = [(-1e3, 1e3)] * layout.size
     out = run.nlp(lambda x: final_rows(problem, layout.unpack(x), origins), layout,
-                  layout.pack(vals), bounds)
-    return out, {k: np.array(v) for k, v in layout.unpack(out.x).items()}
+                  layout.pack(placement_blocks(placements)), bounds)
+    return out, placements_from_blocks(layout.unpack(out.x), placements)
 
 
 def _final(run: _Run, warm) -> TrajectoryResult:
@@ -169,7 +171,7 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
     if why:
         return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
     have = warm is not None and warm.placements and all(
-        f"p{s.index}" in warm.placements for s in problem.steps if s.kind in ("place", "push"))
+        s.index in warm.placements for s in problem.steps if s.kind.places)
     if have and warm.names == problem.names:
         placements = warm.placements
     else:
@@ -179,38 +181,36 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
                               worst_constraint=f"placements: {out.worst}")
     layout = keyframe_layout(problem)
     if layout.size == 0:  # symbolic actions only: nothing moves
-        return run.result("solved", cost=0.0, keyframes={}, choices={},
-                          placements=placements)
+        return run.result("solved", cost=0.0, placements=placements)
     world = problem.world
     bounds = []
+    joints = {keyframe_block(k) for k in range(problem.n_keyframes)}
     for name, _size in layout.blocks:
-        if name.startswith("k"):
+        if name in joints:
             bounds.extend(zip(world.lower, world.upper, strict=True))
         else:
             bounds.append((-GRIP_BOUND, GRIP_BOUND))
     best = None
     for attempt in range(2):
-        vals, choices = keyframe_guess(problem, placements, run.start, run.rng,
-                                       jitter=RETRY_JITTER if attempt else 0.0)
+        guess, choices = keyframe_guess(problem, placements, run.start, run.rng,
+                                        jitter=RETRY_JITTER if attempt else 0.0)
         if attempt == 0 and _shares_prefix(problem, warm):
             choices.update(warm.choices)
-            for block, v in warm.keyframes.items():
-                if block in vals and np.shape(v) == np.shape(vals[block]):
-                    vals[block] = np.array(v, dtype=float)
+            guess = guess.warmed(warm.keyframes)
 
         def evaluate(x, choices=choices):
             return keyframe_rows(problem, layout.unpack(x), choices, run.kin, run.checker,
                                  run.start)
 
-        out = run.nlp(evaluate, layout, layout.pack(vals), bounds)
+        out = run.nlp(evaluate, layout, layout.pack(guess.blocks()), bounds)
         if best is None or (out.status == "solved") or out.violation < best[0].violation:
             best = (out, choices)
         if out.status == "solved" or time.perf_counter() > run.deadline:
             break
     out, choices = best
-    kf = {k: np.array(v) for k, v in layout.unpack(out.x).items()}
+    kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
     T = problem.options.waypoints
-    qs = [run.start] + [kf[f"k{k}"] for k in range(problem.n_keyframes)]
+    qs = [run.start, *kf.q]
     phase_costs = tuple(float(np.sum((b - a) ** 2)) / T for a, b in zip(qs, qs[1:], strict=False))
     if out.status != "solved":
         return run.result(out.status, violation=out.violation, worst_constraint=out.worst,

@@ -4,7 +4,8 @@ final:     x = (x, y, yaw) of every placement (place, push end); no robot.
 keyframes: x = a configuration per keyframe + grip parameters; the held
            object's pose is the tool's pose composed with its grip, so a
            placement is a function of the place keyframe.
-Both walks keep `state`: the pose (PoseX) of every resting movable object.
+Both walks keep `state`: the pose (PoseX) of every resting movable object;
+each step's kind adds its rows (kinds/*.py: final_rows, keyframe_rows).
 """
 
 from __future__ import annotations
@@ -17,8 +18,8 @@ from tampcli.optimize import constraints as C
 from tampcli.optimize.collide import body_matrices, contact_rows, held_of, held_spec, row_keys
 from tampcli.optimize.expr import PoseX, RowSet, constant_pose, held_posex, planar_pose
 from tampcli.optimize.grips import held_pose
-from tampcli.optimize.init import target_rect
-from tampcli.optimize.problem import Layout, TrajectoryProblem
+from tampcli.optimize.layout import Layout, grip_block, keyframe_block, placement_block
+from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.world_state import grip_of, reach_of, vertical_overlap
 
 
@@ -31,12 +32,12 @@ class Rows:
 
 
 def final_layout(problem: TrajectoryProblem) -> Layout:
-    return Layout(tuple((f"p{s.index}", 3) for s in problem.steps if s.kind in ("place", "push")))
+    return Layout(tuple((placement_block(s.index), 3) for s in problem.steps if s.kind.places))
 
 
 def keyframe_layout(problem: TrajectoryProblem) -> Layout:
-    blocks = [(f"k{k}", problem.n) for k in range(problem.n_keyframes)]
-    blocks += [(f"g{s}", 1) for s in problem.grip_params]
+    blocks = [(keyframe_block(k), problem.n) for k in range(problem.n_keyframes)]
+    blocks += [(grip_block(s), 1) for s in problem.grip_params]
     return Layout(tuple(blocks))
 
 
@@ -79,107 +80,102 @@ def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: d
                          min(info.half[0], info.half[1]), oinfo)
 
 
+class FinalWalk:
+    """The "final" NLP's walk: resting poses so far, as functions of the placements."""
+
+    def __init__(self, problem: TrajectoryProblem, vals: dict, origins: dict):
+        self.problem = problem
+        self.vals = vals
+        self.origins = origins
+        self.rows = Rows()
+        self.state, self.heights = _start_state(problem)
+        self.centre, self.reach = reach_of(problem)
+
+    def place(self, step) -> None:
+        """The step's object comes to rest at its placement block, near its target's middle."""
+        block = placement_block(step.index)
+        x, y, yaw = self.vals[block]
+        P = planar_pose(block, x, y, step.rest_z, yaw)
+        _placement_rows(self.rows, self.problem, step, P, self.state, self.heights)
+        if np.isfinite(self.reach):
+            C.within_reach(self.rows.ineq, step.name, P, self.centre, self.reach)
+        self.state[step.obj] = P
+        self.heights[step.obj] = step.rest_z
+        d = np.array([x, y]) - self.origins[step.index]
+        self.rows.cost += 1e-2 * float(d @ d)
+        self.rows.cost_grad[block] = np.array([2e-2 * d[0], 2e-2 * d[1], 0.0])
+
+
 def final_rows(problem: TrajectoryProblem, vals: dict, origins: dict) -> Rows:
-    """`origins`: block -> (x, y) the cost pulls towards (the target's middle)."""
-    rows = Rows()
-    state, heights = _start_state(problem)
-    centre, reach = reach_of(problem)
+    """`origins`: step index -> (x, y) the cost pulls towards (the target's middle)."""
+    walk = FinalWalk(problem, vals, origins)
     for step in problem.steps:
-        if step.kind == "grasp":
-            state.pop(step.obj, None)
-        elif step.kind in ("place", "push"):
-            block = f"p{step.index}"
-            x, y, yaw = vals[block]
-            P = planar_pose(block, x, y, step.rest_z, yaw)
-            _placement_rows(rows, problem, step, P, state, heights)
-            if np.isfinite(reach):
-                C.within_reach(rows.ineq, step.name, P, centre, reach)
-            state[step.obj] = P
-            heights[step.obj] = step.rest_z
-            d = np.array([x, y]) - origins[block]
-            rows.cost += 1e-2 * float(d @ d)
-            rows.cost_grad[block] = np.array([2e-2 * d[0], 2e-2 * d[1], 0.0])
-    return rows
+        step.kind.final_rows(walk, step)
+    return walk.rows
+
+
+class KeyframeWalk:
+    """The keyframe NLP's walk: resting poses, what is held, pending collision queries."""
+
+    def __init__(self, problem: TrajectoryProblem, vals: dict, choices: dict, tool_frames,
+                 collisions: bool):
+        self.problem = problem
+        self.planar = problem.planar
+        self.vals = vals
+        self.choices = choices
+        self.tool_frames = tool_frames
+        self.collisions = collisions
+        self.rows = Rows()
+        self.state, self.heights = _start_state(problem)
+        self.held = None  # (name, grip step)
+        # Collision rows of all keyframes come from one batched query after the walk,
+        # each keyframe in its own world state (what rests where, what is held).
+        self.pending = []
+
+    def _grip_t(self, grip_step_index):
+        grip = grip_of(self.problem, self.problem.steps[grip_step_index], self.choices)
+        t_block = grip_block(grip_step_index) if grip.has_param else None
+        t = float(self.vals[t_block][0]) if t_block else 0.0
+        return grip, t, t_block
+
+    def gripped(self, k, grip_step_index):
+        """(tool frame, grip, t, t block, held pose) at keyframe k, held by that step's grip."""
+        grip, t, t_block = self._grip_t(grip_step_index)
+        frame = self.tool_frames[k]
+        return frame, grip, t, t_block, held_posex(held_pose(frame, grip, t),
+                                                   keyframe_block(k), t_block)
+
+    def held_now(self):
+        """What is held at this point of the walk, as the collision rows take it."""
+        if self.held is None:
+            return None
+        name, grip_step = self.held
+        grip, t, t_block = self._grip_t(grip_step)
+        return held_of(name, grip, t, t_block)
+
+    def collide(self, k, step, held, frame, ignore) -> None:
+        if self.collisions:
+            moved = {n: P for n, P in self.state.items() if P.jac}
+            self.pending.append((k, step.name, held, frame, frozenset(ignore), moved))
+
+    def placement_rows(self, step, P: PoseX) -> None:
+        _placement_rows(self.rows, self.problem, step, P, self.state, self.heights)
 
 
 def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, checker,
                   start: np.ndarray, collisions: bool = True) -> Rows:
-    rows = Rows()
     opts = problem.options
-    state, heights = _start_state(problem)
-    held = None  # (name, grip step)
-    planar = problem.planar
     bodies = list(problem.bodies)
 
     def q_of(k):
-        return vals[f"k{k}"]
+        return vals[keyframe_block(k)]
 
     # The tool frames of all keyframes at once (one batched forward kinematics).
     tool_frames = kin.frames([q_of(k) for k in range(problem.n_keyframes)])
-
-    def gripped(k, grip_step_index):
-        step = problem.steps[grip_step_index]
-        grip = grip_of(problem, step, choices)
-        t_block = f"g{grip_step_index}" if grip.has_param else None
-        t = float(vals[t_block][0]) if t_block else 0.0
-        frame = tool_frames[k]
-        return frame, grip, t, t_block, held_posex(held_pose(frame, grip, t), f"k{k}", t_block)
-
-    # Collision rows of all keyframes come from one batched query after the walk,
-    # each keyframe in its own world state (what rests where, what is held).
-    pending = []
-
-    def collide(k, step, held_spec, frame, ignore):
-        if collisions:
-            moved = {n: P for n, P in state.items() if P.jac}
-            pending.append((k, step.name, held_spec, frame, frozenset(ignore), moved))
-
+    walk = KeyframeWalk(problem, vals, choices, tool_frames, collisions)
     for step in problem.steps:
-        if step.kind == "grasp":
-            (k,) = step.keyframes
-            frame, grip, t, t_block, H = gripped(k, step.index)
-            info = problem.bodies[step.obj]
-            C.same_pose(rows.eq, rows.ineq, step.name, H, state[step.obj], planar,
-                        yaw=not info.disk and not planar)
-            collide(k, step, _held_spec(problem, held, choices, vals), frame, {step.obj})
-            held = (step.obj, step.index)
-            state.pop(step.obj)
-        elif step.kind == "place":
-            (k,) = step.keyframes
-            frame, grip, t, t_block, H = gripped(k, step.grasp_step)
-            if not planar:
-                C.upright(rows.eq, step.name, H, step.obj)
-                C.rest_height(rows.eq, step.name, H, step.rest_z, step.support)
-            _placement_rows(rows, problem, step, H, state, heights)
-            collide(k, step, held_of(step.obj, grip, t, t_block), frame, {step.support})
-            state[step.obj] = H
-            heights[step.obj] = step.rest_z
-            held = None
-        elif step.kind == "push":
-            k0, k1 = step.keyframes
-            frame, grip, t, t_block, H0 = gripped(k0, step.index)
-            info = problem.bodies[step.obj]
-            C.same_pose(rows.eq, rows.ineq, step.name, H0, state[step.obj], planar,
-                        yaw=not info.disk and not planar)
-            collide(k0, step, None, frame, {step.obj})
-            frame, grip, t, t_block, H1 = gripped(k1, step.index)
-            if not planar:
-                C.upright(rows.eq, step.name, H1, step.obj)
-                C.rest_height(rows.eq, step.name, H1, step.rest_z, step.support)
-            state.pop(step.obj)
-            _placement_rows(rows, problem, step, H1, state, heights)
-            collide(k1, step, held_of(step.obj, grip, t, t_block), frame, {step.support})
-            state[step.obj] = H1
-        elif step.kind == "move":
-            (k,) = step.keyframes
-            frame = tool_frames[k]
-            if step.target is not None:
-                tool = PoseX(np.concatenate([frame.p, np.zeros(9)]),
-                             {f"k{k}": np.vstack([frame.Jp, np.zeros((9, problem.n))])})
-                lo, hi = target_rect(problem, step.target)
-                C.point_in_rect(rows.ineq, step.name, tool, lo, hi,
-                                f"tool outside {step.target}")
-            collide(k, step, _held_spec(problem, held, choices, vals), frame, set())
+        step.kind.keyframe_rows(walk, step)
+    rows, pending = walk.rows, walk.pending
     if pending:
         contacts = checker.distances_many(
             np.array([q_of(k) for k, *_ in pending]),
@@ -187,29 +183,18 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
             [held_spec(h) for _, _, h, _, _, _ in pending],
             [ignore for *_, ignore, _ in pending], opts.activation)
         for (k, name, h, frame, ignore, moved), found in zip(pending, contacts, strict=True):
-            contact_rows(rows.ineq, name, found, [(f"k{k}", 1.0)], frame, h, moved,
+            contact_rows(rows.ineq, name, found, [(keyframe_block(k), 1.0)], frame, h, moved,
                          row_keys(bodies, ignore, h), opts.activation, opts.margin)
     # Cost: sum over motions of |dq|^2 / T, the least path cost through these keyframes.
     T = opts.waypoints
     prev, prev_block = np.asarray(start, dtype=float), None
     for k in range(problem.n_keyframes):
+        block = keyframe_block(k)
         d = q_of(k) - prev
         rows.cost += float(d @ d) / T
         g = 2.0 * d / T
-        rows.cost_grad[f"k{k}"] = rows.cost_grad.get(f"k{k}", 0.0) + g
+        rows.cost_grad[block] = rows.cost_grad.get(block, 0.0) + g
         if prev_block is not None:
             rows.cost_grad[prev_block] = rows.cost_grad[prev_block] - g
-        prev, prev_block = q_of(k), f"k{k}"
+        prev, prev_block = q_of(k), block
     return rows
-
-
-def _held_spec(problem, held, choices, vals):
-    if held is None:
-        return None
-    name, grip_step = held
-    grip = grip_of(problem, problem.steps[grip_step], choices)
-    t_block = f"g{grip_step}" if grip.has_param else None
-    t = float(vals[t_block][0]) if t_block else 0.0
-    return held_of(name, grip, t, t_block)
-
-

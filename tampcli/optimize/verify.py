@@ -11,7 +11,7 @@ modes' semantics, taken from the lowered problem.
 
 from __future__ import annotations
 
-import math
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -19,11 +19,14 @@ import numpy as np
 from tampcli.geometry import transforms
 from tampcli.optimize.bodies import REST_TOLERANCE
 from tampcli.optimize.path import allowed_contacts
-from tampcli.optimize.problem import PUSH_STANDOFF, TrajectoryProblem
+from tampcli.optimize.problem import TrajectoryProblem
 
 PENETRATION = 1e-3  # m: deeper is a collision (FCL's own accuracy is ~1e-4)
 RIGID = 2e-3  # m / rad: a held object's drift relative to the tool
 LIMIT = 1e-6  # rad / m beyond a joint limit
+STILL = 1e-6  # m + rad: a resting object moving less than this between phases has not moved
+UPRIGHT = 1e-3  # 1 - cos(tilt) of an object called upright
+INSIDE = 1e-3  # m: a footprint or centre this far outside its target is still inside
 
 
 def _pose(v) -> np.ndarray:
@@ -103,8 +106,7 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
 
 def _label(problem, k) -> str:
     step = problem.step_of_keyframe(k)
-    return step.name if problem.motions[k].kind == "push" or step.kind == "move" else \
-        f"motion before {step.name}"
+    return step.name if problem.motions[k].own else f"motion before {step.name}"
 
 
 def _check_objects(problem: TrajectoryProblem, result) -> list[str]:
@@ -133,7 +135,7 @@ def _check_objects(problem: TrajectoryProblem, result) -> list[str]:
                 if drift > RIGID:
                     out.append(f"{phase.action or f'motion phase {pi}'}: {name} moves "
                                f"relative to the tool by {100 * drift:.1f} cm")
-            elif _distance(vs[pi], vs[pi + 1]) > 1e-6:
+            elif _distance(vs[pi], vs[pi + 1]) > STILL:
                 what = ("jumps" if phase.start == phase.end else "moves but is not attached")
                 out.append(f"{phase.action or f'motion phase {pi}'}: {name} {what} "
                            f"({100 * _distance(vs[pi], vs[pi + 1]):.1f} cm)")
@@ -146,15 +148,37 @@ def _check_objects(problem: TrajectoryProblem, result) -> list[str]:
             step = steps.get(phase.action)
         if step is None:
             continue
-        after = poses[step.obj][pi + 1] if step.obj else None
-        if step.kind == "grasp":
-            out += _check_grasp(problem, step, world.tool_pose(traj[phase.end]), after)
-        if step.kind == "push":
-            out += _check_push(problem, step, world.tool_pose(traj[phase.start]),
-                               poses[step.obj][pi])
-        if step.kind in ("place", "push"):
-            out += _check_rest(problem, step, after, poses, pi + 1, regions)
+        out += step.kind.check(StepCheck(problem, traj, phase, pi, poses, regions), step)
     return out
+
+
+class StepCheck:
+    """What a kind's `check` re-measures a step against: the phase that ends with it."""
+
+    def __init__(self, problem, traj, phase, pi: int, poses: dict, regions: dict):
+        self.problem = problem
+        self.traj = traj
+        self.phase = phase
+        self.pi = pi  # the phase's index: poses[name][pi] before it, [pi + 1] after
+        self.poses = poses
+        self.regions = regions
+
+    def tool_start(self) -> np.ndarray:
+        return self.problem.world.tool_pose(self.traj[self.phase.start])
+
+    def tool_end(self) -> np.ndarray:
+        return self.problem.world.tool_pose(self.traj[self.phase.end])
+
+    def before(self, name: str) -> np.ndarray:
+        return self.poses[name][self.pi]
+
+    def after(self, name: str) -> np.ndarray:
+        return self.poses[name][self.pi + 1]
+
+    def rest(self, step) -> list[str]:
+        """The step's object rests on its support, inside its target."""
+        return _check_rest(self.problem, step, self.after(step.obj), self.poses, self.pi + 1,
+                           self.regions)
 
 
 def _distance(a, b) -> float:
@@ -162,41 +186,10 @@ def _distance(a, b) -> float:
                  np.linalg.norm(transforms.rotation_log(a[:3, :3].T @ b[:3, :3])))
 
 
-def _check_grasp(problem, step, tool, obj) -> list[str]:
-    info = problem.bodies[step.obj]
-    d = tool[:3, 3] - obj[:3, 3]
-    if problem.planar:
-        reach = problem.scene.robot.radius + max(info.half[0], info.half[1]) + 2e-3
-        if math.hypot(d[0], d[1]) > reach:
-            return [f"{step.name}: the robot does not touch {step.obj} "
-                    f"({100 * (math.hypot(d[0], d[1]) - reach):.1f} cm away)"]
-        return []
-    local = obj[:3, :3].T @ d
-    if np.any(np.abs(local) > np.array(info.half) + 2e-3):
-        return [f"{step.name}: the grasp point is outside {step.obj}"]
-    if tool[2, 2] > -0.99:
-        return [f"{step.name}: the gripper does not point down"]
-    return []
-
-
-def _check_push(problem, step, tool, obj) -> list[str]:
-    """The pusher starts against the object: within its half extent plus the pusher."""
-    info = problem.bodies[step.obj]
-    d = tool[:3, 3] - obj[:3, 3]
-    reach = max(info.half[0], info.half[1]) + 2e-3
-    reach += problem.scene.robot.radius if problem.planar else PUSH_STANDOFF
-    gap = math.hypot(d[0], d[1]) - reach
-    if gap > 0:
-        return [f"{step.name}: the push starts {100 * gap:.1f} cm away from {step.obj}"]
-    if not problem.planar and abs(d[2]) > info.half[2]:
-        return [f"{step.name}: the push starts above or below {step.obj}"]
-    return []
-
-
 def _check_rest(problem, step, pose, poses, boundary, regions) -> list[str]:
     out = []
     info = problem.bodies[step.obj]
-    if pose[2, 2] < 1 - 1e-3:
+    if pose[2, 2] < 1 - UPRIGHT:
         out.append(f"{step.name}: {step.obj} is not upright")
     support = problem.bodies[step.support]
     if step.support in poses:
@@ -213,12 +206,12 @@ def _check_rest(problem, step, pose, poses, boundary, regions) -> list[str]:
         corners = _footprint(info, pose)
         outside = max(float(np.max(np.asarray(r.lower) - corners)),
                       float(np.max(corners - np.asarray(r.upper))))
-        if outside > 1e-3:
+        if outside > INSIDE:
             out.append(f"{step.name}: footprint outside region {r.name} by "
                        f"{100 * outside:.1f} cm")
     elif step.target is not None:
         local = s_pose[:3, :3].T @ (pose[:3, 3] - s_pose[:3, 3])
-        if np.any(np.abs(local[:2]) > np.array(support.half[:2]) + 1e-3):
+        if np.any(np.abs(local[:2]) > np.array(support.half[:2]) + INSIDE):
             out.append(f"{step.name}: {step.obj}'s centre is off {step.target}")
     return out
 
@@ -235,12 +228,13 @@ def _footprint(info, pose) -> np.ndarray:
 # ---------------------------------------------------------------- solution files
 
 
+@dataclass(frozen=True)
 class _Op:
-    def __init__(self, text: str):
-        parts = text.strip().strip("()").split()
-        self.name = "(" + " ".join(p.lower() for p in parts) + ")"
-        self.action = parts[0].lower() if parts else ""
-        self.args = tuple(p.lower() for p in parts[1:])
+    """A step of a solution's plan, as `lower` takes it."""
+
+    name: str
+    action: str
+    args: tuple[str, ...]
 
 
 def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]:
@@ -257,6 +251,7 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
     from tampcli.optimize.result import TrajectoryResult
     from tampcli.pddl import ast, parser
     from tampcli.solution_read import read_solution
+    from tampcli.search.plan_text import parse_step
 
     sol = read_solution(path).raw
     if sol.status != "solved":
@@ -288,7 +283,9 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
         if sol.robot.get("joints") and tuple(sol.robot["joints"]) != tuple(world.joint_names):
             return [f"robot joints {sol.robot['joints']} do not match the scene's "
                     f"{list(world.joint_names)}"]
-        problem = lower([_Op(a) for a in sol.plan], scene, modes, world, domain=domain)
+        plan = [parse_step(a, str(path), key=f"plan[{i}]") for i, a in enumerate(sol.plan)]
+        problem = lower([_Op(s.text, s.action, s.args) for s in plan], scene, modes, world,
+                        domain=domain)
         result = TrajectoryResult(
             "solved", "path", problem.names, trajectory=np.array(sol.trajectory, dtype=float),
             phases=sol.phases, object_poses=sol.objects)

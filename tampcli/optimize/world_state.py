@@ -6,39 +6,32 @@ import math
 
 import numpy as np
 
-from tampcli.optimize.grips import Grip
-from tampcli.optimize.problem import (
-    PANDA_FINGER_DEPTH,
-    PANDA_FINGERTIP,
-    PUSH_STANDOFF,
-    Step,
-    TrajectoryProblem,
-)
+from tampcli.optimize.bodies import REST_TOLERANCE
+from tampcli.optimize.grips import Grip, SideGrip
+from tampcli.optimize.values import NO_CHOICE
 
 PANDA_REACH = 0.855  # m, from the shoulder
 PANDA_SHOULDER = 0.333  # m above the base
 
 
-def grip_of(problem: TrajectoryProblem, step: Step, choices: dict) -> Grip:
-    """How `step`'s object hangs from the tool (step = the grasp or push)."""
+def grip_of(problem, step, choices) -> Grip:
+    """How `step`'s object hangs from the tool (step = the grasp or push).
+
+    `choices`: step index -> values.GripChoice. The planar robot holds by
+    suction on the object's side whatever the kind; the arm as the kind says.
+    """
+    choice = choices.get(step.index, NO_CHOICE)
     info = problem.bodies[step.obj]
     if problem.planar:
         base_z = float(problem.scene.robot.base_pose[2, 3])
         rho = problem.scene.robot.radius + max(info.half[0], info.half[1])
-        z = choices.get(f"z{step.index}", info.pose[2])
-        return Grip("side", (0.0, 0.0, z - base_z), rho=rho,
-                    yaw=choices.get(f"yaw{step.index}", info.pose[3]))
-    if step.kind == "push":
-        rho = max(info.half[0], info.half[1]) + PUSH_STANDOFF
-        return Grip("push", (-rho, 0.0, 0.0))
-    # Deep enough to hold, shallow enough that the fingertips stay clear of
-    # whatever the object stands on (thin discs, trays with rims).
-    clear = 2 * info.half[2] - PANDA_FINGERTIP - problem.options.margin - 0.005
-    depth = float(np.clip(min(PANDA_FINGER_DEPTH, clear), 0.002, info.half[2]))
-    return Grip("top", (0.0, 0.0, info.half[2] - depth), psi=choices.get(f"psi{step.index}", 0.0))
+        z = choice.z if choice.z is not None else info.pose[2]
+        return SideGrip((0.0, 0.0, z - base_z), rho=rho,
+                    yaw=choice.yaw if choice.yaw is not None else info.pose[3])
+    return step.kind.grip(problem, step, choice)
 
 
-def reach_of(problem: TrajectoryProblem) -> tuple[np.ndarray, float]:
+def reach_of(problem) -> tuple[np.ndarray, float]:
     """(centre, radius) of a ball the tool cannot leave; infinite for the planar robot."""
     base = problem.scene.robot.base_pose
     if problem.planar:
@@ -57,4 +50,4 @@ def reach_of(problem: TrajectoryProblem) -> tuple[np.ndarray, float]:
 
 def vertical_overlap(z_a: float, half_a: float, z_b: float, half_b: float) -> bool:
     """Two upright bodies whose height ranges overlap by more than the rest tolerance."""
-    return min(z_a + half_a, z_b + half_b) - max(z_a - half_a, z_b - half_b) > 0.005
+    return min(z_a + half_a, z_b + half_b) - max(z_a - half_a, z_b - half_b) > REST_TOLERANCE

@@ -17,24 +17,21 @@ needs no simulator.
 from __future__ import annotations
 
 import bisect
-import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 
 from tampcli.geometry.transforms import pose_from_xyzquat, pose_inverse
+from tampcli.optimize.kinds import KINDS
+from tampcli.search.plan_text import parse_step
 from tampcli.solution import Solution
-
-GEOMETRIC_KINDS = ("grasp", "place", "push", "move")
 
 # Default joint-space speeds: a Panda joint vector moving at 1 rad/s looks
 # unhurried; a planar disk at 0.25 m/s likewise.
 DEFAULT_SPEED = {"planar": 0.25}
 DEFAULT_SPEED_OTHER = 1.0
 AUTO_MOTION_SECONDS = (1.0, 30.0)
-
-_ACTION_NAME = re.compile(r"^\(\s*([^\s()]+)")
 
 
 @dataclass(frozen=True)
@@ -55,16 +52,15 @@ class FrameState:
 class _Item:
     """A stretch of the timeline: a move along segment (i, i+1), or a hold."""
 
-    kind: str  # "move" | "hold"
+    moving: bool  # along a segment of the trajectory, or holding still
     phase: int  # index into phases; -1 = before the first, len(phases) = after the last
     index: int  # waypoint (start of the segment for a move)
     duration: float
 
 
 def schema_of(action: str) -> str:
-    """`"(pick a table)"` -> `"pick"`."""
-    match = _ACTION_NAME.match(action.strip())
-    return match.group(1).lower() if match else action.strip().lower()
+    """`"(pick a table)"` -> `"pick"` (plan_text.parse_step reads it)."""
+    return parse_step(action).action
 
 
 class Replay:
@@ -79,7 +75,11 @@ class Replay:
         self.solution = solution
         self.q = np.asarray(solution.trajectory, dtype=float)
         self.phases = solution.phases
-        self._mode_kind = mode_kind or (lambda action: None)
+        mode_kind = mode_kind or (lambda action: None)
+        # Per phase: its action's kind (optimize.kinds); None for a motion or
+        # when the modes are unknown.
+        names = [mode_kind(p.action) if p.action is not None else None for p in self.phases]
+        self._kinds = [None if name is None else KINDS[name] for name in names]
         self._boundary = {name: [pose_from_xyzquat(p) for p in poses]
                           for name, poses in solution.objects.items()}
         self._grasp = self._grasp_transforms(tool_pose)
@@ -109,17 +109,16 @@ class Replay:
         `attached` (the object held once it is done, as the optimizer writes it)."""
         before, after = [], []
         closed = False
-        for phase in self.phases:
+        for phase, kind in zip(self.phases, self._kinds, strict=True):
             before.append(closed)
             if phase.action is None:
                 closed = phase.attached is not None
                 before[-1] = closed
             elif phase.start == phase.end:
-                kind = self._mode_kind(phase.action)
-                if kind in ("grasp", "place"):
-                    closed = kind == "grasp"
-                elif kind is None:
+                if kind is None:
                     closed = phase.attached is not None
+                elif kind.fingers is not None:
+                    closed = kind.fingers
             after.append(closed)
         return before, after
 
@@ -151,18 +150,18 @@ class Replay:
             else 0.0
 
     def _timeline(self, pause: float) -> list[_Item]:
-        items = [_Item("hold", -1, 0, pause)]
+        items = [_Item(False, -1, 0, pause)]
         for k, phase in enumerate(self.phases):
             if phase.action is not None:
-                items.append(_Item("hold", k, phase.start, pause))
+                items.append(_Item(False, k, phase.start, pause))
             for i in range(phase.start, phase.end):
                 length = float(np.linalg.norm(self.q[i + 1] - self.q[i]))
-                items.append(_Item("move", k, i, length / self.speed))
+                items.append(_Item(True, k, i, length / self.speed))
         if not self.phases:  # a bare trajectory: one motion through it
             for i in range(len(self.q) - 1):
                 length = float(np.linalg.norm(self.q[i + 1] - self.q[i]))
-                items.append(_Item("move", 0, i, length / self.speed))
-        items.append(_Item("hold", len(self.phases), len(self.q) - 1, pause))
+                items.append(_Item(True, 0, i, length / self.speed))
+        items.append(_Item(False, len(self.phases), len(self.q) - 1, pause))
         return [item for item in items if item.duration > 0.0] or [items[0]]
 
     # -- querying ---------------------------------------------------------------
@@ -182,7 +181,7 @@ class Replay:
         item = self.items[j]
         start = self._ends[j] - item.duration
         alpha = 0.0 if item.duration == 0 else min(max((t - start) / item.duration, 0.0), 1.0)
-        if item.kind == "move":
+        if item.moving:
             q = (1.0 - alpha) * self.q[item.index] + alpha * self.q[item.index + 1]
             return self._state(t, q, item.phase, after=False)
         # An instantaneous action switches half-way through its pause; the
@@ -200,9 +199,9 @@ class Replay:
     def is_geometric(self, k: int) -> bool:
         """By the action's mode when known; otherwise by its effect on the world."""
         phase = self.phases[k]
-        kind = self._mode_kind(phase.action)
+        kind = self._kinds[k]
         if kind is not None:
-            return kind in GEOMETRIC_KINDS
+            return kind.geometric
         if phase.start < phase.end or self._closed_before[k] != self._closed_after[k]:
             return True
         return any(not np.allclose(poses[k], poses[k + 1], atol=1e-6)
@@ -229,7 +228,7 @@ class Replay:
                 poses[phase.attached] = self._tool_pose(q) @ self._grasp[k]
         # Held in a grasp (fingers closed), as opposed to pushed along.
         held = phase.attached if phase.attached is not None and self._closed_before[k] and \
-            not after and self._mode_kind(phase.action or "") != "push" else None
+            not after and (self._kinds[k] is None or self._kinds[k].holds) else None
         if phase.action is not None:
             label = phase.action
         elif phase.attached is not None:

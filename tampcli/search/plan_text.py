@@ -102,7 +102,11 @@ def parse_plan(text: str, path: str | None = None, line_offset: int = 0) -> Plan
 
 
 def parse_step(text: str, path: str | None = None, key: str | None = None) -> PlanStep:
-    """One `(action arg ...)` string, e.g. an entry of a solution.json `plan` list."""
+    """One `(action arg ...)` string, e.g. an entry of a solution.json `plan` list.
+
+    The one reader of action names outside plan files: verify and the video's
+    replay take an action's schema and arguments from here too.
+    """
     try:
         parsed = parse_plan(text, path)
     except PlanSyntaxError as err:

@@ -8,11 +8,12 @@ no witness pair switches within the step.
 import numpy as np
 import pytest
 
-from tampcli.optimize.grips import Grip, Kinematics, held_pose
+from tampcli.optimize.grips import Kinematics, SideGrip, TopGrip, YawGrip, held_pose
 from tampcli.optimize.init import final_guess, keyframe_guess
 from tampcli.optimize.path import phase_layout, phase_rows_fn
 from tampcli.optimize.problem import lower
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
+from tampcli.optimize.values import placement_blocks
 
 from .helpers import ops
 
@@ -55,9 +56,9 @@ def test_held_pose_jacobians(wall, kind):
     _, _, world = wall
     kin = Kinematics(world)
     rng = np.random.default_rng(1)
-    grip = {"top": Grip("top", (0.0, 0.0, 0.01), psi=0.7),
-            "push": Grip("push", (-0.04, 0.0, 0.0)),
-            "side": Grip("side", (0.0, 0.0, 0.02), rho=0.08, yaw=0.3)}[kind]
+    grip = {"top": TopGrip((0.0, 0.0, 0.01), psi=0.7),
+            "push": YawGrip((-0.04, 0.0, 0.0)),
+            "side": SideGrip((0.0, 0.0, 0.02), rho=0.08, yaw=0.3)}[kind]
     q = rng.uniform(world.lower, world.upper)
     t = 0.4
 
@@ -83,7 +84,7 @@ def test_final_rows_place_and_stack(wall):
     assert problem.error is None
     layout = final_layout(problem)
     vals, origins = final_guess(problem)
-    x = layout.pack(vals) + np.random.default_rng(0).normal(0, 0.03, layout.size)
+    x = layout.pack(placement_blocks(vals)) + np.random.default_rng(0).normal(0, 0.03, layout.size)
     _check(lambda v: final_rows(problem, v, origins), layout, x)
 
 
@@ -94,7 +95,7 @@ def test_keyframe_rows_without_collisions(wall):
     vals, choices = keyframe_guess(problem, placements, world.start,
                                    np.random.default_rng(0))
     layout = keyframe_layout(problem)
-    x = layout.pack(vals) + np.random.default_rng(1).normal(0, 0.05, layout.size)
+    x = layout.pack(vals.blocks()) + np.random.default_rng(1).normal(0, 0.05, layout.size)
     kin = Kinematics(world)
     eq, _ = _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker,
                                            world.start, collisions=False), layout, x)
@@ -108,7 +109,7 @@ def test_keyframe_rows_planar_push_with_grip_parameter(planar):
     placements, _ = final_guess(problem)
     vals, choices = keyframe_guess(problem, placements, world.start, np.random.default_rng(0))
     layout = keyframe_layout(problem)
-    x = layout.pack(vals) + np.random.default_rng(2).normal(0, 0.02, layout.size)
+    x = layout.pack(vals.blocks()) + np.random.default_rng(2).normal(0, 0.02, layout.size)
     kin = Kinematics(world)
     _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start),
            layout, x, h=1e-6, tol=1e-5)
@@ -172,13 +173,13 @@ def test_keyframe_rows_stacking_on_a_moved_cube():
             0.05 + 0.045 + 0.02)
         layout = final_layout(problem)
         vals, origins = final_guess(problem)
-        x = layout.pack(vals) + np.random.default_rng(3).normal(0, 0.01, layout.size)
+        x = layout.pack(placement_blocks(vals)) + np.random.default_rng(3).normal(0, 0.01, layout.size)
         _check(lambda v: final_rows(problem, v, origins), layout, x)
         placements, _ = final_guess(problem)
         kvals, choices = keyframe_guess(problem, placements, world.start,
                                         np.random.default_rng(0))
         klayout = keyframe_layout(problem)
-        x = klayout.pack(kvals) + np.random.default_rng(4).normal(0, 0.02, klayout.size)
+        x = klayout.pack(kvals.blocks()) + np.random.default_rng(4).normal(0, 0.02, klayout.size)
         kin = Kinematics(world)
         _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
                                        collisions=False), klayout, x)
@@ -195,7 +196,7 @@ def test_keyframe_rows_panda_push(wall):
     placements, _ = final_guess(problem)
     vals, choices = keyframe_guess(problem, placements, world.start, np.random.default_rng(0))
     layout = keyframe_layout(problem)
-    x = layout.pack(vals) + np.random.default_rng(5).normal(0, 0.03, layout.size)
+    x = layout.pack(vals.blocks()) + np.random.default_rng(5).normal(0, 0.03, layout.size)
     kin = Kinematics(world)
     _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
                                    collisions=False), layout, x)

@@ -1,0 +1,102 @@
+"""place: the held object is released, resting on a region's body or on another body.
+
+A carrying motion ends at the place keyframe (the object may touch its new
+support in the last segment); where it rests is a block of the final NLP, and
+in the keyframe NLP a function of the tool through the grip of its grasp.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from tampcli.geometry import transforms
+from tampcli.optimize import constraints as C
+from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix
+from tampcli.optimize.collide import held_of
+from tampcli.optimize.kinds.base import ModeKind
+from tampcli.optimize.skeleton import LoweringError, Step
+
+
+class Place(ModeKind):
+    name = "place"
+    required = ("object", "on")
+    places = True
+    fingers = False
+
+    def lower(self, lo, index, op, mode):
+        obj, target, _ = lo.roles(op, mode)
+        label = op.name
+        lo.movable(label, obj)
+        if lo.held != obj:
+            raise LoweringError(f"{label}: {obj} is not held"
+                                + (f" (holding {lo.held})" if lo.held else ""))
+        if target in lo.regions:
+            body = lo.regions[target].on
+        elif target in lo.infos and target != obj:
+            body = target
+            if lo.holds_up(obj, target):
+                raise LoweringError(f"{label}: {target} rests on {obj}")
+        else:
+            raise LoweringError(f"{label}: the scene has no region or body {target!r}")
+        z = lo.rest_z[body] + lo.infos[body].half[2] + lo.infos[obj].half[2]
+        if lo.planar and abs(z - lo.rest_z[obj]) > REST_TOLERANCE:
+            raise LoweringError(f"{label}: the planar robot cannot lift {obj} onto {body} "
+                                f"({100 * (z - lo.rest_z[obj]):+.1f} cm)")
+        k = lo.motion(index, "carry", obj, lo.held_grip, {body})
+        lo.last_contact = frozenset({obj})
+        step = Step(index, op.name, self, obj, target, body, obj, None, lo.held_grip, (k,), z)
+        lo.rest_z[obj] = z
+        lo.support[obj] = body
+        lo.held, lo.held_grip = None, None
+        return step
+
+    def grip(self, problem, step, choice):
+        raise ValueError(f"{step.name}: a place holds by the grip of its grasp")
+
+    def final_rows(self, walk, step):
+        walk.place(step)
+
+    def guess(self, walk, step):
+        (k,) = step.keyframes
+        p = walk.placements[step.index]
+        x, y, yaw = p.x, p.y, p.yaw
+        grasp = walk.problem.steps[step.grasp_step]
+        grip = walk.grip_of(grasp)
+        if walk.planar:
+            q = walk.planar_q(np.array([x, y, step.rest_z]), grip, walk.grip[grasp.index])
+            P = pose_matrix(x, y, step.rest_z, yaw)
+        else:
+            hold = transforms.pose_inverse(grip.matrix(0.0))
+            targets = [(pose_matrix(x, y, step.rest_z, yaw + d) @ hold, yaw + d)
+                       for d in walk.QUARTERS]
+            q, yaw_ = walk.best_of(targets, (step.obj, grip.matrix(0.0)), {step.support})
+            P = pose_matrix(x, y, step.rest_z, yaw_)
+        walk.poses[step.obj] = P
+        walk.q[k] = q
+        walk.q_prev = q
+
+    def reseed(self, walk, step, k):
+        pass
+
+    def keyframe_rows(self, walk, step):
+        (k,) = step.keyframes
+        frame, grip, t, t_block, H = walk.gripped(k, step.grasp_step)
+        if not walk.planar:
+            C.upright(walk.rows.eq, step.name, H, step.obj)
+            C.rest_height(walk.rows.eq, step.name, H, step.rest_z, step.support)
+        walk.placement_rows(step, H)
+        walk.collide(k, step, held_of(step.obj, grip, t, t_block), frame, {step.support})
+        walk.state[step.obj] = H
+        walk.heights[step.obj] = step.rest_z
+        walk.held = None
+
+    def switch(self, walk, step):
+        walk.release(step.obj)
+        walk.grasp = None
+
+    def phases(self, walk, step):
+        walk.release(step.obj)
+        walk.instant(step)
+
+    def check(self, walk, step):
+        return walk.rest(step)

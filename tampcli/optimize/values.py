@@ -1,0 +1,83 @@
+"""What the stages hand each other (and a later skeleton, as a warm start): typed values.
+
+The NLPs themselves work on named blocks of x (layout.py); these are the
+values read out of a solved NLP and put back into the next one.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from tampcli.optimize.layout import grip_block, keyframe_block, placement_block
+
+
+@dataclass(frozen=True)
+class GripChoice:
+    """The discrete part of a step's grip, fixed by the initial guess and then kept."""
+
+    psi: float | None = None  # arm top grasp: object yaw minus tool yaw
+    z: float | None = None  # planar: height of the object's centre while it is held
+    yaw: float | None = None  # planar: the object's yaw while it is held (the disk cannot turn)
+
+
+NO_CHOICE = GripChoice()
+
+
+@dataclass(frozen=True)
+class Placement:
+    """Where a place or push leaves its object: (x, y) and yaw; z follows from the stack."""
+
+    x: float
+    y: float
+    yaw: float
+
+    def array(self) -> np.ndarray:
+        return np.array([self.x, self.y, self.yaw])
+
+
+def placement_blocks(placements: Mapping[int, Placement]) -> dict[str, np.ndarray]:
+    """The final NLP's blocks of these placements (see layout.placement_block)."""
+    return {placement_block(s): p.array() for s, p in placements.items()}
+
+
+def placements_from_blocks(blocks: Mapping[str, np.ndarray], steps) -> dict[int, Placement]:
+    """The placement of each step in `steps` (indices) from the final NLP's blocks."""
+    out = {}
+    for s in steps:
+        x, y, yaw = (float(v) for v in blocks[placement_block(s)])
+        out[s] = Placement(x, y, yaw)
+    return out
+
+
+@dataclass(frozen=True)
+class Keyframes:
+    """A configuration per keyframe and the continuous grip parameter of each step that has one."""
+
+    q: tuple[np.ndarray, ...] = ()
+    grip: Mapping[int, float] = field(default_factory=dict)  # step index -> t
+
+    def __len__(self) -> int:
+        return len(self.q)
+
+    def blocks(self) -> dict[str, np.ndarray]:
+        """The keyframe NLP's blocks (see layout.keyframe_block, layout.grip_block)."""
+        out = {keyframe_block(k): q for k, q in enumerate(self.q)}
+        out.update({grip_block(s): np.array([t]) for s, t in self.grip.items()})
+        return out
+
+    @classmethod
+    def from_blocks(cls, blocks: Mapping[str, np.ndarray], n_keyframes: int,
+                    grip_steps) -> Keyframes:
+        return cls(tuple(np.array(blocks[keyframe_block(k)], dtype=float)
+                         for k in range(n_keyframes)),
+                   {s: float(blocks[grip_block(s)][0]) for s in grip_steps})
+
+    def warmed(self, warm: Keyframes) -> Keyframes:
+        """These keyframes with those `warm` has for the same keyframes and steps."""
+        q = tuple(np.array(warm.q[k], dtype=float)
+                  if k < len(warm.q) and np.shape(warm.q[k]) == np.shape(v) else v
+                  for k, v in enumerate(self.q))
+        return Keyframes(q, {s: float(warm.grip.get(s, t)) for s, t in self.grip.items()})
