@@ -1,7 +1,7 @@
 """A skeleton resolved against the scene: its steps, its motion phases, and the
 walk that builds them (each mode kind's `lower` adds its own).
 
-Phases (SPEC, solution.json): before each grasp, place or push a motion phase
+Phases (docs/formats.md, "solution.json"): before each grasp, place or push a motion phase
 of T waypoints is inserted (free, or carrying what is held); a push then
 spans its own pushing motion; a move *is* a motion phase; mode switches and
 symbolic actions are instantaneous. Each motion phase ends at a keyframe

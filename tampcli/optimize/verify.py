@@ -250,8 +250,8 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
     from tampcli.optimize.problem import lower
     from tampcli.optimize.result import TrajectoryResult
     from tampcli.pddl import ast, parser
-    from tampcli.solution_read import read_solution
     from tampcli.search.plan_text import parse_step
+    from tampcli.solution_read import read_solution
 
     sol = read_solution(path).raw
     if sol.status != "solved":
