@@ -49,13 +49,6 @@ class _Span:
     stationary: bool = False  # a motion the file leaves out
 
 
-@dataclasses.dataclass(frozen=True)
-class _Op:
-    name: str
-    action: str
-    args: tuple[str, ...]
-
-
 def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path) -> list[str]:
     """Violations in words (empty: the trajectory is feasible); a solution that
     does not fit its scene raises SolutionFileError."""
@@ -63,6 +56,7 @@ def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path
     from tampcli.geometry.world import World
     from tampcli.optimize import verify
     from tampcli.optimize.problem import lower
+    from tampcli.search.plan_text import parse_step
 
     sol, path = checked.canonical, checked.path
     if sol.status != "solved":
@@ -78,10 +72,11 @@ def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path
     scene = scene_mod.load_scene(scene_path, domain, problem_ast, geometric=False)
     with World(scene) as world:
         check_fits_world(checked, world, scene_path)
-        problem = lower([_op(a) for a in sol.plan], scene, modes, world, domain=domain)
+        plan = [parse_step(a, str(path), key=f"plan[{i}]") for i, a in enumerate(sol.plan)]
+        problem = lower(plan, scene, modes, world, domain=domain)
         if problem.error is not None:
             return [problem.error]
-        spans = _spans(checked, problem.steps)
+        spans = _spans(checked, problem)
         if spans and spans[-1].action is None:
             problem = _with_retreat(problem, spans[-1], checked, world)
         result, stationary = _result(checked, spans)
@@ -91,17 +86,17 @@ def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path
     return found
 
 
-def _op(text: str) -> _Op:
-    words = text.replace("(", " ").replace(")", " ").lower().split()
-    return _Op("(" + " ".join(words) + ")", words[0] if words else "", tuple(words[1:]))
+def _spans(checked: SolutionFile, problem) -> list[_Span]:
+    """The canonical phases laid out one moving phase per motion of the plan.
 
-
-def _spans(checked: SolutionFile, steps) -> list[_Span]:
-    """The canonical phases laid out one moving phase per motion of the plan."""
+    The lowered problem says which motions each step has: an approach (the
+    way to a grasp, place or push, carrying what its motion carries) and/or
+    its own (a move; a push's pushing). A step with no approach takes the
+    motion before it into its own."""
     out: list[_Span] = []
     pending: _Span | None = None  # the motion since the last geometric action
     deferred: list[_Span] = []  # symbolic actions inside that motion
-    steps = iter(steps)
+    steps = iter(problem.steps)
     for k, phase in enumerate(checked.canonical.phases):
         before, after = checked.boundaries[k], checked.boundaries[k + 1]
         if phase.action is None:
@@ -113,7 +108,7 @@ def _spans(checked: SolutionFile, steps) -> list[_Span]:
                                           before, after), []
             continue
         step = next(steps)
-        if step.kind == "none":
+        if not step.kind.geometric:
             if pending is None:
                 out.append(_Span(step.name, phase.start, phase.end, phase.attached, before,
                                  after))
@@ -123,12 +118,13 @@ def _spans(checked: SolutionFile, steps) -> list[_Span]:
             continue
         out += deferred
         deferred = []
-        if step.kind == "move" and phase.end > phase.start:
+        approach = next((m for m in problem.motions if m.step == step.index and not m.own), None)
+        if approach is None and phase.end > phase.start:
             first = pending or _Span(None, phase.start, phase.start, None, before, before)
             out.append(_Span(step.name, first.start, phase.end, phase.attached, first.before,
                              after))
         else:
-            held = None if step.kind == "push" else step.held_before
+            held = approach.attached if approach is not None else step.held_before
             out.append(pending or _Span(None, phase.start, phase.start, held, before, before,
                                         stationary=True))
             out.append(_Span(step.name, phase.start, phase.end, phase.attached, before, after))
@@ -186,17 +182,20 @@ def _with_retreat(problem, span: _Span, checked: SolutionFile, world):
     the plan (what the last grasp lifted off, what the last place or push let
     go of); a planar robot's load slides on what it stands on."""
     from tampcli.optimize.bodies import REST_TOLERANCE
+    from tampcli.optimize.kinds import MOTION
     from tampcli.optimize.problem import MotionPhase, Step
 
     support, touched = dict(problem.start_supports), frozenset()
     for step in problem.steps:
-        if step.kind == "grasp":
-            touched = frozenset({support.get(step.obj)} - {None})
-            support[step.obj] = None
-        elif step.kind in ("place", "push"):
+        if not step.kind.geometric:
+            continue
+        if step.kind.places:
             touched = frozenset({step.obj})
             support[step.obj] = step.support
-        elif step.kind == "move":
+        elif step.held_after is not None and step.held_after != step.held_before:
+            touched = frozenset({support.get(step.obj)} - {None})  # what it lifted it off
+            support[step.obj] = None
+        else:
             touched = frozenset()
     sliding: frozenset[str] = frozenset()
     if problem.planar and span.attached is not None:
@@ -206,7 +205,7 @@ def _with_retreat(problem, span: _Span, checked: SolutionFile, world):
                             if n != span.attached and abs(b.top - bottom) <= REST_TOLERANCE)
     last = problem.steps[-1].name if problem.steps else None
     step = Step(len(problem.steps), f"the motion after {last}" if last else "the motion",
-                "move")
+                MOTION)
     motion = MotionPhase(len(problem.motions), step.index, span.attached, None,
                          "carry" if span.attached else "free", frozenset(), touched, sliding)
     return dataclasses.replace(problem, steps=problem.steps + (step,),

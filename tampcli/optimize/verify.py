@@ -11,7 +11,6 @@ modes' semantics, taken from the lowered problem.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -228,15 +227,6 @@ def _footprint(info, pose) -> np.ndarray:
 # ---------------------------------------------------------------- solution files
 
 
-@dataclass(frozen=True)
-class _Op:
-    """A step of a solution's plan, as `lower` takes it."""
-
-    name: str
-    action: str
-    args: tuple[str, ...]
-
-
 def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]:
     """`verify` on a solution.json (scene and modes found as docs/formats.md says).
 
@@ -284,8 +274,7 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
             return [f"robot joints {sol.robot['joints']} do not match the scene's "
                     f"{list(world.joint_names)}"]
         plan = [parse_step(a, str(path), key=f"plan[{i}]") for i, a in enumerate(sol.plan)]
-        problem = lower([_Op(s.text, s.action, s.args) for s in plan], scene, modes, world,
-                        domain=domain)
+        problem = lower(plan, scene, modes, world, domain=domain)
         result = TrajectoryResult(
             "solved", "path", problem.names, trajectory=np.array(sol.trajectory, dtype=float),
             phases=sol.phases, object_poses=sol.objects)

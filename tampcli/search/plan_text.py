@@ -29,6 +29,11 @@ class PlanStep:
     def text(self) -> str:
         return "(" + " ".join((self.action, *self.args)) + ")"
 
+    @property
+    def name(self) -> str:
+        """The ground action's name, as a Task's operators spell it."""
+        return self.text
+
 
 @dataclass(frozen=True)
 class PlanText:

@@ -22,5 +22,6 @@ KINDS: dict[str, ModeKind] = {kind.name: kind for kind in (
     Symbolic(),
 )}
 SYMBOLIC = KINDS[Symbolic.name]  # an action without a mode
+MOTION = KINDS[Move.name]  # a motion that is no action of the plan (a retreat after the last)
 
-__all__ = ["KINDS", "SYMBOLIC", "ModeKind"]
+__all__ = ["KINDS", "MOTION", "SYMBOLIC", "ModeKind"]
