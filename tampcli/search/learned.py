@@ -1,0 +1,202 @@
+"""Skeletons ordered by what geometry has learned: obstructions flow back to the task.
+
+A domain often says nothing of what is in the way: `(in ?b ?r)` with no
+`clear` and no capacity. Geometry finds out: placing `a` in the goal
+overlaps `b`, which still stands where it started; the way to `a` runs
+through `c`. Each such finding is a `Blocker` (the body in the way, the
+ground action it blocked), and becomes a precondition over the task: that
+action needs the body *moved* first. The task is compiled anew with one
+fact `(moved b)` per blocking body, added by every action that moves `b`,
+and required by the actions `b` blocked; the top-k enumeration restarts on
+it, so the next skeletons are those that clear the obstruction.
+
+Sound, not complete on its own: a learned precondition is a guess (a body
+moved out of the way may come back elsewhere; it may have blocked only in
+the pose the optimizer happened to choose). So it orders skeletons, never
+filters them: when the compiled task has no skeleton left, the plain task's
+skeletons follow, each drawn once. `lower_bound()` is proved on symbolic
+cost whatever was learned: the cheapest skeleton of the *plain* task not
+drawn yet.
+
+A skeleton made of a solved one plus more actions is skipped (counted in
+`stats["superseded"]`): the extra actions change nothing the solved one
+needed, and cost more.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections import deque
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+from tampcli.task.task import Operator, Task
+
+MOVED = "(tampcli-moved {})"  # the fact a learned precondition asks for
+
+
+@dataclass(frozen=True)
+class Blocker:
+    """`body`, where it stood, blocked the ground action `action` (its name)."""
+
+    body: str
+    action: str
+
+
+def compile_task(task: Task, blockers: frozenset[Blocker],
+                 moves: Callable[[Operator], frozenset[str]]) -> Task:
+    """The task with a `(moved b)` fact per blocking body: added by every
+    operator that moves b, a precondition of each operator b blocked."""
+    bodies = sorted({b.body for b in blockers})
+    fact = {body: len(task.facts) + i for i, body in enumerate(bodies)}
+    needs: dict[str, set[int]] = {}
+    for b in blockers:
+        needs.setdefault(b.action, set()).add(fact[b.body])
+    operators = []
+    for op in task.operators:
+        adds = {fact[body] for body in moves(op) if body in fact}
+        pre = needs.get(op.name)
+        if adds or pre:
+            op = dataclasses.replace(
+                op, add=op.add | adds,
+                pre=dataclasses.replace(op.pre, pos=op.pre.pos | frozenset(pre or ())))
+        operators.append(op)
+    return dataclasses.replace(task, facts=task.facts + tuple(MOVED.format(b) for b in bodies),
+                               operators=tuple(operators))
+
+
+def _is_subsequence(short: tuple[str, ...], long: tuple[str, ...]) -> bool:
+    rest = iter(long)
+    return all(any(name == other for other in rest) for name in short)
+
+
+class LearningSource:
+    """A SkeletonSource (branch and bound's) that learns from geometric failures.
+
+    `make_topk(task)` builds a ranked plan iterator with `forbid_prefix`
+    (search.topk.TopK); `moves(op)` names the bodies an operator moves.
+    `loopless`: the plain enumeration passes no state twice; the compiled
+    task's states tell more apart (what was moved), so its plans are held
+    to the same rule on the plain task's states."""
+
+    def __init__(self, task: Task, make_topk: Callable[[Task], object],
+                 moves: Callable[[Operator], frozenset[str]], loopless: bool = True):
+        self.task, self._make, self._moves = task, make_topk, moves
+        self.loopless = loopless
+        self._by_name = {op.name: op for op in task.operators}
+        self.blockers: frozenset[Blocker] = frozenset()
+        self._plain = make_topk(task)
+        self._plain_queue: deque = deque()  # plain plans pulled for the bound, not yet drawn
+        self._plain_done = False
+        self._learned = None  # the compiled task's iterator while it has skeletons
+        self._drawn: set[tuple[str, ...]] = set()
+        self._solved: list[tuple[str, ...]] = []
+        self._forbidden: list[tuple[str, ...]] = []
+        self.stats = {"learned": 0, "restarts": 0, "superseded": 0, "from_learned": 0}
+
+    # ------------------------------------------------------------ what bnb tells it
+
+    def learn(self, blocker: Blocker) -> bool:
+        """Take a finding in; True when it is new (the enumeration restarts)."""
+        if blocker in self.blockers:
+            return False
+        self.blockers = self.blockers | {blocker}
+        self.stats["learned"] += 1
+        self.stats["restarts"] += 1
+        self._learned = self._make(compile_task(self.task, self.blockers, self._moves))
+        for names in self._forbidden:
+            self._learned.forbid_prefix(names)
+        return True
+
+    def solved(self, names: tuple[str, ...]) -> None:
+        """A skeleton found feasible: its supersequences are not worth an NLP."""
+        self._solved.append(tuple(names))
+
+    def forbid_prefix(self, names: tuple[str, ...]) -> None:
+        self._forbidden.append(tuple(names))
+        self._plain.forbid_prefix(names)
+        if self._learned is not None:
+            self._learned.forbid_prefix(names)
+        self._plain_queue = deque(p for p in self._plain_queue
+                                  if p.names[:len(names)] != tuple(names))
+
+    # ------------------------------------------------------------ what it gives
+
+    @property
+    def status(self) -> str:
+        return getattr(self._plain, "status", "running")
+
+    def lower_bound(self) -> float:
+        """Proved: no skeleton not yet drawn costs less (symbolic cost)."""
+        while not self._plain_queue or self._plain_queue[0].names in self._drawn:
+            if self._plain_queue:
+                self._plain_queue.popleft()
+                continue
+            if not self._pull_plain():
+                return math.inf
+        return self._plain_queue[0].cost
+
+    def __iter__(self) -> Iterator:
+        return self
+
+    def __next__(self):
+        while True:
+            plan = self._next_learned()
+            if plan is None:
+                plan = self._next_plain()
+            if plan is None:
+                raise StopIteration
+            names = plan.names
+            if names in self._drawn:
+                continue
+            self._drawn.add(names)
+            if any(_is_subsequence(s, names) for s in self._solved):
+                self.stats["superseded"] += 1
+                continue
+            return plan
+
+    def _next_learned(self):
+        while self._learned is not None:
+            try:
+                plan = next(self._learned)
+            except StopIteration:
+                self._learned = None
+                return None
+            plan = self._plain_version(plan)
+            if plan.names not in self._drawn and not (self.loopless and self._loops(plan)):
+                self.stats["from_learned"] += 1
+                return plan
+        return None
+
+    def _loops(self, plan) -> bool:
+        state = self.task.init
+        seen = {state}
+        for op in plan.operators:
+            state = self.task.apply(state, op)
+            if state in seen:
+                return True
+            seen.add(state)
+        return False
+
+    def _plain_version(self, plan):
+        """The plan with the task's own operators (the compiled ones carry `moved` facts)."""
+        return dataclasses.replace(plan, operators=tuple(self._by_name[op.name]
+                                                         for op in plan.operators))
+
+    def _next_plain(self):
+        while self._plain_queue or self._pull_plain():
+            plan = self._plain_queue.popleft()
+            if plan.names not in self._drawn:
+                return plan
+        return None
+
+    def _pull_plain(self) -> bool:
+        if self._plain_done:
+            return False
+        try:
+            self._plain_queue.append(next(self._plain))
+            return True
+        except StopIteration:
+            self._plain_done = True
+            return False

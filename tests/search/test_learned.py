@@ -1,0 +1,139 @@
+"""Skeletons ordered by learned obstructions: order changes, nothing is lost, bounds hold."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from tampcli.pddl import parser
+from tampcli.search.learned import Blocker, LearningSource, compile_task
+from tampcli.search.topk import TopK
+from tampcli.task.ground import ground
+
+DOMAIN = """
+(define (domain pen)
+  (:requirements :strips :typing)
+  (:types block region)
+  (:predicates (in ?b - block ?r - region) (holding ?b - block) (handempty))
+  (:action pick :parameters (?b - block ?r - region)
+    :precondition (and (in ?b ?r) (handempty))
+    :effect (and (holding ?b) (not (in ?b ?r)) (not (handempty))))
+  (:action place :parameters (?b - block ?r - region)
+    :precondition (holding ?b)
+    :effect (and (in ?b ?r) (handempty) (not (holding ?b)))))
+"""
+
+PROBLEM = """
+(define (problem pen-k{k}) (:domain pen)
+  (:objects a {blockers} - block floor goal - region)
+  (:init (handempty) (in a floor) {init})
+  (:goal (in a goal)))
+"""
+
+
+def pen(k: int):
+    names = [f"b{i}" for i in range(1, k + 1)]
+    text = PROBLEM.format(k=k, blockers=" ".join(names),
+                          init=" ".join(f"(in {n} goal)" for n in names))
+    return ground(parser.parse_domain(DOMAIN), parser.parse_problem(text)), names
+
+
+def moves(op) -> frozenset[str]:
+    return frozenset(op.args[:1]) if op.action == "pick" else frozenset()
+
+
+def source(task) -> LearningSource:
+    return LearningSource(task, lambda t: TopK(t, loopless=True), moves)
+
+
+def test_compiled_task_needs_the_blocker_moved_before_the_blocked_action():
+    task, _ = pen(1)
+    compiled = compile_task(task, frozenset({Blocker("b1", "(place a goal)")}), moves)
+    assert compiled.facts[-1] == "(tampcli-moved b1)"
+    moved = len(compiled.facts) - 1
+    by_name = {op.name: op for op in compiled.operators}
+    assert moved in by_name["(place a goal)"].pre.pos
+    assert moved in by_name["(pick b1 goal)"].add
+    assert moved not in by_name["(place a floor)"].pre.pos
+    assert [op.name for op in compiled.operators] == [op.name for op in task.operators]
+
+
+def simulate(k: int, limit: int = 500) -> int:
+    """Skeletons drawn until the one that takes every blocker out first, when geometry
+    reports the first blocker still in the goal at the final placement."""
+    task, names = pen(k)
+    src = source(task)
+    for drawn, plan in enumerate(src, start=1):
+        state = {n: "goal" for n in names}
+        blocked = None
+        for op in plan.operators:
+            if op.action == "pick" and op.args[0] in state:
+                state[op.args[0]] = None
+            elif op.action == "place" and op.args[0] in state:
+                state[op.args[0]] = op.args[1]
+            elif op.name == "(place a goal)":
+                blocked = next((n for n in names if state[n] == "goal"), None)
+        if blocked is None:
+            return drawn
+        src.learn(Blocker(blocked, "(place a goal)"))
+        assert drawn < limit
+    raise AssertionError("no skeleton clears the pen")
+
+
+@pytest.mark.parametrize("k", [1, 2, 3, 4])
+def test_skeletons_before_the_first_feasible_grow_linearly_in_the_blockers(k):
+    assert simulate(k) <= 3 * k + 3
+
+
+def test_learning_orders_but_never_loses_a_skeleton():
+    task, _ = pen(2)
+    plain = [p.names for p in TopK(task, loopless=True)]
+    src = source(task)
+    drawn = []
+    for i, plan in enumerate(src):
+        drawn.append(plan.names)
+        if i == 0:
+            src.learn(Blocker("b1", "(place a goal)"))
+    assert sorted(drawn) == sorted(plain) and len(set(drawn)) == len(drawn)
+    assert drawn[:2] != plain[:2]  # the order changed
+
+
+def test_lower_bound_is_the_cheapest_undrawn_plain_skeleton():
+    task, _ = pen(2)
+    src = source(task)
+    costs = []
+    for i, plan in enumerate(src):
+        bound = src.lower_bound()
+        costs.append(plan.cost)
+        rest = [p for p in TopK(task, loopless=True) if p.names not in src._drawn]
+        assert bound == (min(p.cost for p in rest) if rest else math.inf)
+        if i == 0:
+            src.learn(Blocker("b2", "(place a goal)"))
+        if i > 12:
+            break
+
+
+def test_a_solved_skeleton_supersedes_its_supersequences():
+    task, _ = pen(1)
+    src = source(task)
+    first = next(src)
+    assert first.names == ("(pick a floor)", "(place a goal)")
+    src.solved(first.names)
+    rest = list(src)
+    assert all(not _contains(p.names, first.names) for p in rest)
+    assert src.stats["superseded"] > 0
+
+
+def test_forbidden_prefixes_stay_forbidden_after_a_restart():
+    task, _ = pen(1)
+    src = source(task)
+    next(src)
+    src.forbid_prefix(("(pick b1 goal)",))
+    src.learn(Blocker("b1", "(place a goal)"))
+    assert all(p.names[:1] != ("(pick b1 goal)",) for p in src)
+
+
+def _contains(long, short):
+    it = iter(long)
+    return all(any(x == y for y in it) for x in short)
