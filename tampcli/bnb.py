@@ -29,21 +29,24 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
+from tampcli.options import require_int, require_number
+from tampcli.prefix_tree import PrefixTree, shortest_failing_prefix
 from tampcli.solution import SkeletonRecord
 
 STAGES = ("final", "keyframes", "path")
-DEFAULT_SYMBOLIC_WEIGHT = 0.1
+TIE = 1e-12  # objectives this close count as equal when the symbolic bound is compared
 
 
 @dataclass(frozen=True)
 class BnBOptions:
-    """Options of the skeleton search.
+    """Options of the skeleton search (checked when built).
 
-    max_skeletons: skeletons drawn at most (`-k`).
-    time_limit: seconds for the whole search (checked between NLP solves).
-    symbolic_weight: w in objective = trajectory cost (rad^2 or m^2) + w * symbolic cost;
-        the default 0.1 makes ten unit-cost actions weigh as much as one rad^2 of motion:
-        a tie-breaker towards shorter plans that rarely overrides geometry.
+    max_skeletons: skeletons drawn at most (a count, `-k`).
+    time_limit: seconds for the whole search, drawing skeletons included (checked
+        between NLP solves); infinity is no limit.
+    symbolic_weight: w (>= 0) in objective = trajectory cost (rad^2 or m^2) + w * symbolic
+        cost; the default 0.1 makes ten unit-cost actions weigh as much as one rad^2 of
+        motion: a tie-breaker towards shorter plans that rarely overrides geometry.
     anytime: keep improving until a limit instead of stopping at the first solution
         whose optimality cannot be improved by a cheaper skeleton.
     prefix_pruning: when a skeleton's keyframe problem fails, find its shortest failing
@@ -52,17 +55,14 @@ class BnBOptions:
 
     max_skeletons: int = 20
     time_limit: float = 120.0
-    symbolic_weight: float = DEFAULT_SYMBOLIC_WEIGHT
+    symbolic_weight: float = 0.1
     anytime: bool = False
     prefix_pruning: bool = True
 
     def __post_init__(self):
-        if self.max_skeletons < 1:
-            raise ValueError("max_skeletons must be >= 1")
-        if not self.time_limit > 0:
-            raise ValueError("time_limit must be > 0")
-        if self.symbolic_weight < 0:
-            raise ValueError("symbolic_weight must be >= 0")
+        require_int(self.max_skeletons, "max_skeletons", 1)
+        require_number(self.time_limit, "time_limit", positive=True, unit="s", finite=False)
+        require_number(self.symbolic_weight, "symbolic_weight")
 
 
 class StageResult(Protocol):
@@ -113,36 +113,6 @@ class BnBResult:
     improvements: list[tuple[float, float]] = field(default_factory=list)  # (seconds, objective)
 
 
-class _PrefixTree:
-    """Results of keyframe problems by action-name prefix (memo + warm starts)."""
-
-    def __init__(self):
-        self._results: dict[tuple[str, ...], Any] = {}
-        self.infeasible: set[tuple[str, ...]] = set()
-
-    def get(self, prefix: tuple[str, ...]):
-        return self._results.get(prefix)
-
-    def put(self, prefix: tuple[str, ...], result) -> None:
-        self._results[prefix] = result
-        if result.status != "solved":
-            self.infeasible.add(prefix)
-
-    def blocked(self, names: tuple[str, ...]) -> tuple[str, ...] | None:
-        for i in range(1, len(names) + 1):
-            if names[:i] in self.infeasible:
-                return names[:i]
-        return None
-
-    def warm_for(self, names: tuple[str, ...]):
-        """The solved result of the longest evaluated proper prefix, if any."""
-        for i in range(len(names), 0, -1):
-            result = self._results.get(names[:i])
-            if result is not None and result.status == "solved":
-                return result
-        return None
-
-
 def branch_and_bound(
     skeletons: SkeletonSource | Iterable,
     evaluate: Evaluate,
@@ -155,185 +125,237 @@ def branch_and_bound(
 
     `skeletons` yields plans with `.operators` (each with `.name`) and `.cost`.
     `is_geometric(op)` tells which actions end a keyframe (prefixes worth testing).
+    `evaluate(ops, stage, warm)` solves one stage; `warm` is the result of an earlier
+    stage (or of a prefix's keyframes), passed through untouched.
     """
-    started = clock()
-    w = options.symbolic_weight
-    emit = on_event or (lambda event: None)
-    tree = _PrefixTree()
-    evaluated: dict[tuple[str, ...], int] = {}  # geometric actions -> rank that had them
-    records: list[SkeletonRecord] = []
-    stats = {"skeletons_generated": 0, "skeletons_optimized": 0, "skeletons_pruned": 0,
-             "skeletons_infeasible": 0, "nlp_solves": 0, "nlp_iterations": 0,
-             "prefixes_forbidden": 0, "optimize_seconds": 0.0}
-    incumbent: dict | None = None
-    improvements: list[tuple[float, float]] = []
-    stop_reason = "exhausted"
-    failures: list[tuple[int, tuple[str, ...], str, str]] = []  # rank, plan, stage, why
-    deepest_feasible: tuple[str, ...] = ()
-    all_proved_infeasible = True
+    search = _Search(skeletons, evaluate, options, is_geometric, on_event, clock)
+    return search.run()
 
-    def elapsed() -> float:
-        return clock() - started
 
-    def run_stage(ops, stage, warm):
-        t0 = clock()
-        result = evaluate(ops, stage, warm)
-        stats["nlp_solves"] += getattr(result, "nlp_solves", 1) or 1
-        stats["nlp_iterations"] += getattr(result, "iterations", 0) or 0
-        stats["optimize_seconds"] += clock() - t0
-        return result
+@dataclass(frozen=True)
+class _Incumbent:
+    objective: float
+    result: Any  # the path-stage result
+    plan: tuple[Any, ...]
+    symbolic: float
 
-    iterator = iter(skeletons)
-    rank = 0
-    while True:
-        if elapsed() >= options.time_limit:
-            stop_reason = "time"
-            break
-        if rank >= options.max_skeletons:
-            stop_reason = "skeletons"
-            break
-        try:
-            plan = next(iterator)
-        except StopIteration:
-            stop_reason = "exhausted"
-            break
-        rank += 1
-        stats["skeletons_generated"] += 1
+
+@dataclass
+class _Trial:
+    """One drawn skeleton on its way through the stages."""
+
+    rank: int
+    ops: tuple[Any, ...]
+    names: tuple[str, ...]
+    symbolic: float
+    proved_bound: float
+    started: float
+    outcome: str = "solved"
+    reason: str | None = None
+    reached: str | None = None
+    heuristic_bound: float | None = None
+    nlp_cost: float | None = None
+    path_result: Any = None
+
+
+class _Search:
+    """The state of one branch and bound: incumbent, records, statistics."""
+
+    def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock):
+        self.skeletons, self.evaluate, self.options = skeletons, evaluate, options
+        self.is_geometric, self.clock = is_geometric, clock
+        self.emit = on_event or (lambda event: None)
+        self.w = options.symbolic_weight
+        self.started = clock()
+        self.tree = PrefixTree()
+        self.evaluated: dict[tuple[str, ...], int] = {}  # geometric actions -> rank
+        self.records: list[SkeletonRecord] = []
+        self.stats = {"skeletons_generated": 0, "skeletons_optimized": 0,
+                      "skeletons_pruned": 0, "skeletons_infeasible": 0, "nlp_solves": 0,
+                      "nlp_iterations": 0, "prefixes_forbidden": 0, "optimize_seconds": 0.0}
+        self.incumbent: _Incumbent | None = None
+        self.improvements: list[tuple[float, float]] = []
+        self.failures: list[tuple[int, tuple[str, ...], str, str]] = []  # rank, plan, stage, why
+        self.deepest_feasible: tuple[str, ...] = ()
+        self.all_proved_infeasible = True
+        self.rank = 0
+
+    def elapsed(self) -> float:
+        return self.clock() - self.started
+
+    def run(self) -> BnBResult:
+        iterator = iter(self.skeletons)
+        while True:
+            if self.elapsed() >= self.options.time_limit:
+                stop = "time"
+                break
+            if self.rank >= self.options.max_skeletons:
+                stop = "skeletons"
+                break
+            plan = next(iterator, None)
+            if plan is None:
+                stop = "exhausted"
+                break
+            trial = self._draw(plan)
+            if self._cannot_beat_incumbent(trial):
+                stop = "optimal"
+                break
+            if self._pruned_before_nlp(trial):
+                continue
+            self._run_stages(trial)
+            self._record(trial)
+        return self._result(stop)
+
+    def _draw(self, plan) -> _Trial:
+        self.rank += 1
+        self.stats["skeletons_generated"] += 1
         ops = tuple(plan.operators)
         names = tuple(op.name for op in ops)
         symbolic = float(plan.cost)
-        proved_bound = w * symbolic
-        t_skel = clock()
-        emit(Event("skeleton", rank, names, symbolic, bound=proved_bound, seconds=elapsed()))
+        trial = _Trial(self.rank, ops, names, symbolic, self.w * symbolic, self.clock())
+        self.emit(Event("skeleton", trial.rank, names, symbolic, bound=trial.proved_bound,
+                        seconds=self.elapsed()))
+        return trial
 
-        if incumbent is not None and proved_bound >= incumbent["objective"] - 1e-12:
-            # Every skeleton from here on is at least this expensive: optimal.
-            records.append(SkeletonRecord(rank, names, symbolic, "not reached", proved_bound,
-                                          "proved", None, None, None, 0.0,
-                                          "cannot beat the incumbent (symbolic bound)"))
-            stop_reason = "optimal"
-            break
+    def _cannot_beat_incumbent(self, trial: _Trial) -> bool:
+        """Every skeleton from here on is at least this expensive: the incumbent is optimal."""
+        if self.incumbent is None or trial.proved_bound < self.incumbent.objective - TIE:
+            return False
+        self.records.append(SkeletonRecord(
+            trial.rank, trial.names, trial.symbolic, "not reached", trial.proved_bound,
+            "proved", None, None, None, 0.0, "cannot beat the incumbent (symbolic bound)"))
+        return True
 
-        # Symbolic-only actions add no motion and no constraint: a skeleton whose
-        # geometric actions are those of one already evaluated (say, with `cook`
-        # moved past the last motion) has the same trajectory NLP, and a symbolic
-        # cost no lower (skeletons arrive in non-decreasing cost): it cannot win.
-        motion = tuple(n for op, n in zip(ops, names, strict=True) if is_geometric(op))
-        twin = evaluated.get(motion)
-        blocked = tree.blocked(names) if twin is None else None
-        if twin is not None or blocked is not None:
-            # Pruned before any NLP, by an argument that holds whatever the geometry.
-            stats["skeletons_pruned"] += 1
-            why = (f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
-                   if twin is not None else f"shares the infeasible prefix {' '.join(blocked)}")
-            records.append(SkeletonRecord(rank, names, symbolic, "pruned", proved_bound,
-                                          "proved", None, None, None, 0.0, why))
-            emit(Event("outcome", rank, names, symbolic, outcome="pruned", message=why))
-            continue
+    def _pruned_before_nlp(self, trial: _Trial) -> bool:
+        """Pruned by an argument that holds whatever the geometry.
 
-        stats["skeletons_optimized"] += 1
-        evaluated[motion] = rank
-        outcome, reason, reached, heuristic_bound, nlp_cost = "solved", None, None, None, None
-        warm = tree.warm_for(names)
-        path_result = None
+        Symbolic-only actions add no motion and no constraint: a skeleton whose
+        geometric actions are those of one already evaluated (say, with `cook`
+        moved past the last motion) has the same trajectory NLP, and a symbolic
+        cost no lower (skeletons arrive in non-decreasing cost): it cannot win.
+        """
+        motion = tuple(n for op, n in zip(trial.ops, trial.names, strict=True)
+                       if self.is_geometric(op))
+        twin = self.evaluated.get(motion)
+        blocked = self.tree.blocked(trial.names) if twin is None else None
+        if twin is None and blocked is None:
+            self.stats["skeletons_optimized"] += 1
+            self.evaluated[motion] = trial.rank
+            return False
+        self.stats["skeletons_pruned"] += 1
+        why = (f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
+               if twin is not None else f"shares the infeasible prefix {' '.join(blocked)}")
+        self.records.append(SkeletonRecord(trial.rank, trial.names, trial.symbolic, "pruned",
+                                           trial.proved_bound, "proved", None, None, None,
+                                           0.0, why))
+        self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, outcome="pruned",
+                        message=why))
+        return True
+
+    def _stage(self, ops, stage: str, warm):
+        t0 = self.clock()
+        result = self.evaluate(ops, stage, warm)
+        self.stats["nlp_solves"] += getattr(result, "nlp_solves", 1) or 1
+        self.stats["nlp_iterations"] += getattr(result, "iterations", 0) or 0
+        self.stats["optimize_seconds"] += self.clock() - t0
+        return result
+
+    def _run_stages(self, trial: _Trial) -> None:
+        """Final placements, keyframes, full path: stop at the first that fails or
+        whose keyframe bound cannot beat the incumbent."""
+        warm = self.tree.warm_for(trial.names)
         for stage in STAGES:
-            reached = stage
-            emit(Event("stage", rank, names, symbolic, stage=stage, seconds=elapsed()))
-            result = run_stage(ops, stage, warm)
+            trial.reached = stage
+            self.emit(Event("stage", trial.rank, trial.names, trial.symbolic, stage=stage,
+                            seconds=self.elapsed()))
+            result = self._stage(trial.ops, stage, warm)
             if stage == "keyframes":
-                tree.put(names, result)
+                self.tree.put(trial.names, result)
             if result.status != "solved":
-                outcome = "infeasible"
-                reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
-                if not getattr(result, "proved", False):
-                    all_proved_infeasible = False
-                if result.status == "limit":
-                    all_proved_infeasible = False
-                if (stage == "keyframes" and options.prefix_pruning
-                        and result.status == "infeasible"):
-                    prefix = _shortest_failing_prefix(ops, names, tree, run_stage, is_geometric)
-                    if prefix is not None and prefix != names and hasattr(skeletons,
-                                                                          "forbid_prefix"):
-                        skeletons.forbid_prefix(prefix)
-                        stats["prefixes_forbidden"] += 1
-                        reason += f" (prefix {' '.join(prefix)} is infeasible)"
-                break
+                self._stage_failed(trial, stage, result)
+                return
             warm = result
-            if stage == "keyframes" and result.cost is not None:
-                heuristic_bound = result.cost + w * symbolic
-                if (incumbent is not None and not options.anytime
-                        and heuristic_bound >= incumbent["objective"]):
-                    outcome = "pruned"
-                    reason = (f"keyframe bound {heuristic_bound:.4g} >= incumbent "
-                              f"{incumbent['objective']:.4g} (heuristic)")
-                    break
-                if len(names) > len(deepest_feasible):
-                    deepest_feasible = names
+            if stage == "keyframes" and result.cost is not None \
+                    and self._keyframe_bound_prunes(trial, result.cost):
+                return
             if stage == "path":
-                path_result = result
-                nlp_cost = result.cost
+                trial.path_result, trial.nlp_cost = result, result.cost
 
-        seconds = clock() - t_skel
+    def _stage_failed(self, trial: _Trial, stage: str, result) -> None:
+        trial.outcome = "infeasible"
+        trial.reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
+        if not getattr(result, "proved", False) or result.status == "limit":
+            self.all_proved_infeasible = False
+        if stage == "keyframes" and self.options.prefix_pruning \
+                and result.status == "infeasible":
+            prefix = shortest_failing_prefix(trial.ops, trial.names, self.tree, self._stage,
+                                              self.is_geometric)
+            if prefix is not None and prefix != trial.names \
+                    and hasattr(self.skeletons, "forbid_prefix"):
+                self.skeletons.forbid_prefix(prefix)
+                self.stats["prefixes_forbidden"] += 1
+                trial.reason += f" (prefix {' '.join(prefix)} is infeasible)"
+
+    def _keyframe_bound_prunes(self, trial: _Trial, keyframe_cost: float) -> bool:
+        trial.heuristic_bound = keyframe_cost + self.w * trial.symbolic
+        if (self.incumbent is not None and not self.options.anytime
+                and trial.heuristic_bound >= self.incumbent.objective):
+            trial.outcome = "pruned"
+            trial.reason = (f"keyframe bound {trial.heuristic_bound:.4g} >= incumbent "
+                            f"{self.incumbent.objective:.4g} (heuristic)")
+            return True
+        if len(trial.names) > len(self.deepest_feasible):
+            self.deepest_feasible = trial.names
+        return False
+
+    def _record(self, trial: _Trial) -> None:
         total = None
-        if outcome == "solved" and path_result is not None:
-            total = nlp_cost + w * symbolic
-            if incumbent is None or total < incumbent["objective"]:
-                incumbent = {"objective": total, "result": path_result, "plan": ops,
-                             "symbolic": symbolic}
-                improvements.append((elapsed(), total))
-                emit(Event("incumbent", rank, names, symbolic, cost=nlp_cost, bound=total,
-                           seconds=elapsed()))
-        elif outcome == "infeasible":
-            stats["skeletons_infeasible"] += 1
-            failures.append((rank, names, reached, reason or ""))
-        elif outcome == "pruned":
-            stats["skeletons_pruned"] += 1
-        records.append(SkeletonRecord(
-            rank, names, symbolic, outcome,
-            heuristic_bound if heuristic_bound is not None else proved_bound,
-            "heuristic" if heuristic_bound is not None else "proved",
-            reached, nlp_cost, total, seconds, reason))
-        emit(Event("outcome", rank, names, symbolic, stage=reached, outcome=outcome,
-                   cost=nlp_cost, bound=total, seconds=elapsed(), message=reason))
+        if trial.outcome == "solved" and trial.path_result is not None:
+            total = trial.nlp_cost + self.w * trial.symbolic
+            if self.incumbent is None or total < self.incumbent.objective:
+                self.incumbent = _Incumbent(total, trial.path_result, trial.ops, trial.symbolic)
+                self.improvements.append((self.elapsed(), total))
+                self.emit(Event("incumbent", trial.rank, trial.names, trial.symbolic,
+                                cost=trial.nlp_cost, bound=total, seconds=self.elapsed()))
+        elif trial.outcome == "infeasible":
+            self.stats["skeletons_infeasible"] += 1
+            self.failures.append((trial.rank, trial.names, trial.reached, trial.reason or ""))
+        elif trial.outcome == "pruned":
+            self.stats["skeletons_pruned"] += 1
+        heuristic = trial.heuristic_bound is not None
+        self.records.append(SkeletonRecord(
+            trial.rank, trial.names, trial.symbolic, trial.outcome,
+            trial.heuristic_bound if heuristic else trial.proved_bound,
+            "heuristic" if heuristic else "proved", trial.reached, trial.nlp_cost, total,
+            self.clock() - trial.started, trial.reason))
+        self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, stage=trial.reached,
+                        outcome=trial.outcome, cost=trial.nlp_cost, bound=total,
+                        seconds=self.elapsed(), message=trial.reason))
 
-    # A trajectory cost is >= 0 and skeletons come in non-decreasing symbolic
-    # cost, so no solution has an objective below w * (the first symbolic cost).
-    proved_lb = w * records[0].symbolic_cost if records else None
-    # "optimal" here means: no skeleton not yet drawn can beat the incumbent. The
-    # incumbent's own trajectory is a local optimum of its NLP, which we do not claim.
-    optimal = stop_reason == "optimal"
-    stats["stop"] = stop_reason
-    stats["seconds"] = elapsed()
-    # When the first solution came: what a user waits for before `--anytime` or the
-    # search for a better skeleton goes on.
-    stats["first_solution_seconds"] = improvements[0][0] if improvements else None
-    emit(Event("stop", rank, message=stop_reason, seconds=elapsed()))
-
-    if incumbent is not None:
-        return BnBResult("solved", None, incumbent["result"], incumbent["plan"],
-                         incumbent["symbolic"], incumbent["objective"], proved_lb, optimal,
-                         records, stats, improvements)
-    status = "limit"
-    if stop_reason == "exhausted" and (rank == 0 or all_proved_infeasible):
-        status = "unsolvable"
-    reason = _explain(stop_reason, rank, failures, deepest_feasible, options)
-    return BnBResult(status, reason, None, (), None, None, proved_lb, False, records, stats,
-                     improvements)
-
-
-def _shortest_failing_prefix(ops, names, tree: _PrefixTree, run_stage, is_geometric):
-    """Shortest prefix (ending at a geometric action) whose keyframe problem fails."""
-    for i in range(1, len(ops)):
-        if not is_geometric(ops[i - 1]):
-            continue
-        prefix = names[:i]
-        known = tree.get(prefix)
-        if known is None:
-            known = run_stage(ops[:i], "keyframes", tree.warm_for(prefix[:-1]))
-            tree.put(prefix, known)
-        if known.status == "infeasible":
-            return prefix
-    return names
+    def _result(self, stop: str) -> BnBResult:
+        # A trajectory cost is >= 0 and skeletons come in non-decreasing symbolic
+        # cost, so no solution has an objective below w * (the first symbolic cost).
+        proved_lb = self.w * self.records[0].symbolic_cost if self.records else None
+        self.stats["stop"] = stop
+        self.stats["seconds"] = self.elapsed()
+        # When the first solution came: what a user waits for before `--anytime` or the
+        # search for a better skeleton goes on.
+        self.stats["first_solution_seconds"] = \
+            self.improvements[0][0] if self.improvements else None
+        self.emit(Event("stop", self.rank, message=stop, seconds=self.elapsed()))
+        best = self.incumbent
+        if best is not None:
+            # "optimal" here means: no skeleton not yet drawn can beat the incumbent. Its
+            # own trajectory is a local optimum of its NLP, which we do not claim.
+            return BnBResult("solved", None, best.result, best.plan, best.symbolic,
+                             best.objective, proved_lb, stop == "optimal", self.records,
+                             self.stats, self.improvements)
+        status = "limit"
+        if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):
+            status = "unsolvable"
+        reason = _explain(stop, self.rank, self.failures, self.deepest_feasible, self.options)
+        return BnBResult(status, reason, None, (), None, None, proved_lb, False, self.records,
+                         self.stats, self.improvements)
 
 
 def _explain(stop_reason, tried, failures, deepest_feasible, options) -> str:
