@@ -16,12 +16,20 @@ import time
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING
 
-from tampcli.bnb import BnBOptions, Event, branch_and_bound
+from tampcli.bnb import BnBOptions, BnBResult, Event, branch_and_bound
 from tampcli.optimize.options import OptimizeOptions
 from tampcli.pddl import ast, parser
 from tampcli.solution import Phase, Solution
+
+if TYPE_CHECKING:  # numpy, pybullet and FCL behind these: imported only for a scene
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.model import Scene
+    from tampcli.geometry.modes import Modes
+    from tampcli.geometry.tomlsrc import TomlSource
+    from tampcli.geometry.world import World
+    from tampcli.task.task import Task
 
 
 @dataclass(frozen=True)
@@ -62,10 +70,10 @@ class ParsedInputs:
     paths: InputPaths  # with the scene and modes files found filled in
     domain: ast.Domain
     problem: ast.Problem
-    task: Any  # task.Task
-    scene: Any = None  # geometry.scene.Scene
-    modes: Any = None  # geometry.modes.Modes
-    scene_source: Any = None
+    task: Task
+    scene: Scene | None = None
+    modes: Modes | None = None
+    scene_source: TomlSource | None = None
 
 
 @dataclass(frozen=True)
@@ -75,7 +83,7 @@ class Solved:
 
     solution: Solution
     inputs: ParsedInputs
-    world: Any = None  # geometry.world.World
+    world: World | None = None
 
 
 class Timers:
@@ -218,12 +226,12 @@ def _solve_symbolic(inputs: ParsedInputs, options: SolveOptions, timers: Timers)
 class _Geometry:
     """The solve's one World and the CollisionChecker over it."""
 
-    world: Any
-    checker: Any
+    world: World
+    checker: CollisionChecker
 
 
 def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
-                     timers: Timers, on_event) -> Solution:
+                     timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
         from tampcli.search.topk import TopK
 
@@ -266,7 +274,8 @@ class _Evaluator:
         return self.solve_stage(self.lowered[names], stage, warm=warm, options=options)
 
 
-def _solution(inputs: ParsedInputs, world, options: SolveOptions, result, stats) -> Solution:
+def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result: BnBResult,
+              stats: dict) -> Solution:
     paths = inputs.paths
     robot = {"model": inputs.scene.robot.model, "joints": list(world.joint_names),
              "tool_link": world.tool_link}
