@@ -8,7 +8,6 @@ from pathlib import Path
 from rich.table import Table
 
 from tampcli.errors import ExitCode
-from tampcli.options import default_of
 from tampcli.render.camera import parse_camera
 from tampcli.render.options import RenderOptions
 
@@ -46,7 +45,8 @@ def add_parser(p) -> None:
 
 
 def _default(field: str):
-    return default_of(RenderOptions, field)
+    """RenderOptions' default of `field` (a dataclass keeps it as a class attribute)."""
+    return getattr(RenderOptions, field)
 
 
 def options_from_args(args) -> RenderOptions:

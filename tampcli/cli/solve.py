@@ -10,9 +10,8 @@ from rich.table import Table
 
 from tampcli import solution as solution_file
 from tampcli.bnb import BnBOptions, Event
-from tampcli.errors import ExitCode, UsageError
+from tampcli.errors import ExitCode, OptionError, UsageError
 from tampcli.optimize.options import OptimizeOptions
-from tampcli.options import OptionError, default_of
 from tampcli.pipeline import InputPaths, SolveOptions, solving
 
 # The options value of each SolveOptions field a flag sets.
@@ -34,7 +33,8 @@ class Flag:
 
     @property
     def default(self):
-        return default_of(_STAGES[self.stage], self.field)
+        # A dataclass keeps each plain field default as a class attribute.
+        return getattr(_STAGES[self.stage], self.field)
 
 
 FLAGS = (

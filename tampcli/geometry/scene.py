@@ -1,4 +1,4 @@
-"""scene.toml -> Scene: the geometry of one problem (see docs/scene.md).
+"""scene.toml -> Scene: the geometry of one problem (see SPEC.md, "scene.toml").
 
 Obstacles: a body whose `name` is not an object (or constant) of the PDDL
 problem is an obstacle. An obstacle must say `fixed = true`; it then takes

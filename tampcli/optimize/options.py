@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from tampcli.options import OptionError, require_int, require_number
+from tampcli.errors import OptionError, require_int, require_number
 
 
 @dataclass(frozen=True)

@@ -29,8 +29,8 @@ from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
-from tampcli.options import require_int, require_number
-from tampcli.prefix_tree import PrefixTree, shortest_failing_prefix
+from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
+from tampcli.errors import require_int, require_number
 from tampcli.solution import SkeletonRecord
 
 STAGES = ("final", "keyframes", "path")
