@@ -4,7 +4,8 @@ Skeletons arrive lazily from the top-k generator in non-decreasing symbolic
 cost. Each is evaluated cheap to expensive — final placements, keyframes,
 full path — and dropped at the first stage that fails. Geometry reaches this
 module only as a plain callable `evaluate(skeleton, stage, warm)`, so the
-search can be tested with toy functions.
+search can be tested with toy functions. `prefix_tree.py` keeps the keyframe
+results by prefix (memo, warm starts, infeasible prefixes).
 
 Objective of a solution: trajectory cost + w * symbolic cost.
 
