@@ -26,6 +26,7 @@ sys.path.insert(0, str(ROOT / "tests" / "render"))
 
 from render_solutions import panda_solution  # noqa: E402
 
+from tampcli.geometry.world import World  # noqa: E402
 from tampcli.render.frames import FrameJob, _runs, frame_renderer  # noqa: E402
 from tampcli.render.inputs import load_inputs  # noqa: E402
 from tampcli.render.options import RenderOptions  # noqa: E402
@@ -42,6 +43,12 @@ def options_for(frames: int, workers: int) -> RenderOptions:
                          workers=workers)
 
 
+def planned(inputs, options: RenderOptions):
+    """The replay and camera `render_solution` would use."""
+    with World(inputs.scene) as world:
+        return _plan(inputs, world, options)
+
+
 def cpu_seconds() -> float:
     """CPU time of this process and of its finished children (workers, ffmpeg)."""
     own = resource.getrusage(resource.RUSAGE_SELF)
@@ -53,7 +60,7 @@ def peer(solution, frames: int) -> tuple[float, float]:
     """(wall, CPU) seconds to pose and photograph every state in this process."""
     options = options_for(frames, 1)
     inputs = load_inputs(solution)
-    replay, camera = _plan(inputs, options)
+    replay, camera = planned(inputs, options)
     states = replay.states(FPS)
     assert len(states) == frames, len(states)
     job = FrameJob(inputs.scene, camera, WIDTH, HEIGHT, caption=False)
@@ -92,7 +99,7 @@ def main() -> None:
                          f"{'s' if workers > 1 else ''}", *ours(solution, frames, workers,
                                                               Path(folder))))
             loads.append(os.getloadavg()[0])
-    unique = len(_runs(_plan(load_inputs(solution), options_for(frames, 1))[0].states(FPS))[0])
+    unique = len(_runs(planned(load_inputs(solution), options_for(frames, 1))[0].states(FPS))[0])
     t_peer = rows[0][1]
     lines = [
         "# Render benchmark",

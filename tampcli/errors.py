@@ -4,11 +4,17 @@ An InputError knows the file, line and column it is about and, when it can,
 the offending source line, so the CLI can print `path:line:col: message`, the
 line and a caret. Everything that is the user's fault is an InputError; any
 other exception is a bug (exit 70).
+
+The options of a stage (frozen dataclasses) are checked when built with
+`require_int` / `require_number` and raise OptionError, a ValueError naming
+the field: from a library caller it is a bug, and a command that built the
+options from its flags turns it into a UsageError naming the flag.
 """
 
 from __future__ import annotations
 
 import enum
+import math
 
 
 class ExitCode(enum.IntEnum):
@@ -114,3 +120,31 @@ def source_line_at(text: str, line: int | None) -> str | None:
     if line > len(lines):
         return None
     return lines[line - 1].removesuffix("\r")
+
+
+class OptionError(ValueError):
+    """A bad option value; `field` names the dataclass field, so a command line
+    can name its own flag for it."""
+
+    def __init__(self, field: str, message: str):
+        super().__init__(f"{field} {message}")
+        self.field = field
+        self.message = message
+
+
+def require_int(value, field: str, least: int) -> None:
+    if isinstance(value, bool) or not isinstance(value, int) or value < least:
+        raise OptionError(field, f"must be an integer >= {least}, got {value!r}")
+
+
+def require_number(value, field: str, *, positive: bool = False, unit: str = "",
+                   finite: bool = True) -> None:
+    """A number, > 0 with `positive`, else >= 0; infinity only without `finite`
+    (a time limit of inf is no limit), never NaN."""
+    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and \
+        not math.isnan(value) and (not finite or math.isfinite(value)) and \
+        (value > 0 if positive else value >= 0)
+    if not ok:
+        bound = "> 0" if positive else ">= 0"
+        raise OptionError(field, f"must be a number {bound}{f' ({unit})' if unit else ''}, "
+                          f"got {value!r}")

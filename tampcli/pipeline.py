@@ -1,50 +1,96 @@
 """The whole TAMP pipeline in one place: each stage run in order, timed by name.
 
-    parse -> ground -> scene -> (top-k skeletons x trajectory NLPs: branch and bound) -> Solution
+    parse -> ground -> scene -> World + start check
+          -> (top-k skeletons x trajectory NLPs: branch and bound) -> Solution
 
+A solve reads each input once and builds one World and one CollisionChecker;
+`solving` keeps that World open for its caller (`solve --video` renders in it).
 Heavy modules (numpy, pybullet, scipy) are imported only when a scene exists.
+Nothing here prints: progress leaves as `bnb.Event`s through `on_event`.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-from tampcli.bnb import BnBOptions, Event, branch_and_bound
-from tampcli.pddl import parser
+from tampcli.bnb import BnBOptions, BnBResult, Event, branch_and_bound
+from tampcli.optimize.options import OptimizeOptions
+from tampcli.pddl import ast, parser
 from tampcli.solution import Phase, Solution
+
+if TYPE_CHECKING:  # numpy, pybullet and FCL behind these: imported only for a scene
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.model import Scene
+    from tampcli.geometry.modes import Modes
+    from tampcli.geometry.tomlsrc import TomlSource
+    from tampcli.geometry.world import World
+    from tampcli.task.task import Task
 
 
 @dataclass(frozen=True)
 class SolveOptions:
-    """Options of `tampcli solve`.
+    """Options of one solve: one checked value per stage.
 
-    max_skeletons: skeletons drawn at most (-k).
-    time_limit: seconds for the whole solve.
-    symbolic_weight: w in objective = trajectory cost + w * symbolic cost.
-    waypoints: waypoints per motion phase.
-    anytime: keep improving until a limit.
-    seed: random seed (IK restarts, tie-breaking): same input and seed, same result.
+    bnb: the skeleton search; its `time_limit` (s) bounds the whole solve,
+        drawing skeletons included, and its `symbolic_weight` also prices a
+        symbolic-only solution.
+    optimize: the trajectory NLPs; its `time_limit` (s) caps one stage of one
+        skeleton, and is cut to what is left of the solve's.
     """
 
-    max_skeletons: int = 20
-    time_limit: float = 120.0
-    symbolic_weight: float = 0.1
-    waypoints: int = 10
-    anytime: bool = False
-    seed: int = 0
+    bnb: BnBOptions = BnBOptions()
+    optimize: OptimizeOptions = OptimizeOptions()
 
-    def __post_init__(self):
-        if self.waypoints < 2:
-            raise ValueError("waypoints must be >= 2")
+
+@dataclass(frozen=True)
+class InputPaths:
+    """The files of a solve; a scene or modes file left out is looked for beside
+    the problem (`PROBLEM.scene.toml`) or the domain (`modes.toml`)."""
+
+    domain: str
+    problem: str
+    scene: str | None = None
+    modes: str | None = None
+
+
+@dataclass(frozen=True)
+class ParsedInputs:
+    """Everything a solve reads, each file read once.
+
+    `scene` is None when the problem has no scene (a symbolic solve); then
+    `modes` and `scene_source` are None too. `scene_source` (a TomlSource)
+    places start-state errors on the scene file's lines.
+    """
+
+    paths: InputPaths  # with the scene and modes files found filled in
+    domain: ast.Domain
+    problem: ast.Problem
+    task: Task
+    scene: Scene | None = None
+    modes: Modes | None = None
+    scene_source: TomlSource | None = None
+
+
+@dataclass(frozen=True)
+class Solved:
+    """What `solving` yields: the solution, the inputs it came from, and the
+    solve's World (None for a symbolic solve), open until the block ends."""
+
+    solution: Solution
+    inputs: ParsedInputs
+    world: World | None = None
 
 
 class Timers:
-    """Seconds per named stage."""
+    """Seconds per named stage, since the timers were made."""
 
     def __init__(self):
+        self.started = time.perf_counter()
         self.seconds: dict[str, float] = {}
 
     @contextmanager
@@ -81,14 +127,50 @@ class _TimedSkeletons:
             yield plan
 
 
-def solve(domain_path: str, problem_path: str, scene_path: str | None = None,
-          modes_path: str | None = None, options: SolveOptions = SolveOptions(),
+def solve(paths: InputPaths, options: SolveOptions = SolveOptions(),
           on_event: Callable[[Event], None] | None = None) -> Solution:
+    """Solve and close the World: the Solution alone."""
+    with solving(paths, options, on_event) as solved:
+        return solved.solution
+
+
+@contextmanager
+def solving(paths: InputPaths, options: SolveOptions = SolveOptions(),
+            on_event: Callable[[Event], None] | None = None) -> Iterator[Solved]:
+    """Read the inputs, build the World and CollisionChecker (once each), check
+    the start state, search; yield the result with the World still open.
+
+    Raises InputError (bad PDDL, scene, modes, start state) before any search.
+    """
     timers = Timers()
-    started = time.perf_counter()
+    inputs = read_inputs(paths, timers)
+    if inputs.scene is None:
+        yield Solved(_solve_symbolic(inputs, options, timers), inputs)
+        return
+    with timers.stage("setup"):
+        # What a process pays once (pybullet and FCL imports; the simulator and the
+        # collision geometry), reported apart from the solve proper.
+        from tampcli.geometry.collision import CollisionChecker
+        from tampcli.geometry.startcheck import check_start_state
+        from tampcli.geometry.world import World
+
+        world = World(inputs.scene)
+    with world:
+        with timers.stage("setup"):
+            checker = CollisionChecker(world)
+        with timers.stage("scene"):
+            check_start_state(world, checker, inputs.scene_source)
+        solution = _solve_geometric(inputs, _Geometry(world, checker), options, timers,
+                                    on_event)
+        yield Solved(solution, inputs, world)
+
+
+def read_inputs(paths: InputPaths, timers: Timers) -> ParsedInputs:
+    """Parse and check the PDDL, ground it, and load the scene and modes when the
+    problem has a scene."""
     with timers.stage("parse"):
-        domain = parser.parse_domain_file(domain_path)
-        problem = parser.parse_problem_file(problem_path)
+        domain = parser.parse_domain_file(paths.domain)
+        problem = parser.parse_problem_file(paths.problem)
         _check(domain, problem)
     with timers.stage("ground"):
         from tampcli.task.ground import ground
@@ -97,13 +179,22 @@ def solve(domain_path: str, problem_path: str, scene_path: str | None = None,
 
     from tampcli.geometry.locate import find_modes, find_scene
 
-    scene_file = scene_path or find_scene(problem_path)
+    scene_file = paths.scene or find_scene(paths.problem)
     if scene_file is None:
-        return _solve_symbolic(domain_path, problem_path, task, options, timers, started)
-    modes_file = modes_path or find_modes(domain_path)
-    return _solve_geometric(domain_path, problem_path, str(scene_file),
-                            str(modes_file) if modes_file else None, domain, problem, task,
-                            options, timers, started, on_event)
+        return ParsedInputs(paths, domain, problem, task)
+    modes_file = paths.modes or find_modes(paths.domain)
+    found = InputPaths(paths.domain, paths.problem, str(scene_file),
+                       str(modes_file) if modes_file else None)
+    with timers.stage("setup"):
+        from tampcli.errors import SceneError
+        from tampcli.geometry.scene import load_modes, read_scene  # numpy, tomllib
+    with timers.stage("scene"):
+        if modes_file is None:
+            raise SceneError("the problem has a scene but the domain has no modes.toml beside "
+                             "it (or pass --modes)", paths.domain)
+        modes = load_modes(modes_file, domain)
+        scene, source = read_scene(scene_file, domain, problem, modes=modes)
+    return ParsedInputs(found, domain, problem, task, scene, modes, source)
 
 
 def _check(domain, problem) -> None:
@@ -114,82 +205,84 @@ def _check(domain, problem) -> None:
     check.check(domain, problem)
 
 
-def _solve_symbolic(domain_path, problem_path, task, options, timers, started) -> Solution:
+def _solve_symbolic(inputs: ParsedInputs, options: SolveOptions, timers: Timers) -> Solution:
     from tampcli.search.topk import TopK
 
+    paths, weight = inputs.paths, options.bnb.symbolic_weight
     with timers.stage("search"):
-        plan = next(iter(TopK(task, loopless=True, time_limit=options.time_limit)), None)
-    stats = _stats(timers, started, {"symbolic_only": True})
+        plan = next(iter(TopK(inputs.task, loopless=True, time_limit=options.bnb.time_limit)),
+                    None)
+    stats = _stats(timers, {"symbolic_only": True})
     if plan is None:
-        return Solution(domain_path, problem_path, None, "unsolvable",
+        return Solution(paths.domain, paths.problem, None, "unsolvable",
                         reason="no plan: the task is symbolically unsolvable", stats=stats)
-    return Solution(domain_path, problem_path, None, "solved",
+    return Solution(paths.domain, paths.problem, None, "solved",
                     reason=None, plan=tuple(op.name for op in plan.operators),
                     symbolic_cost=plan.cost, cost=0.0, lower_bound=None, stats=stats,
-                    symbolic_weight=options.symbolic_weight,
-                    objective=options.symbolic_weight * plan.cost)
+                    symbolic_weight=weight, objective=weight * plan.cost)
 
 
-def _solve_geometric(domain_path, problem_path, scene_file, modes_file, domain, problem, task,
-                     options, timers, started, on_event) -> Solution:
-    # "setup": what a process pays once (numpy, scipy, pybullet and FCL imports; the
-    # simulator and the collision geometry), reported apart from the solve proper.
+@dataclass(frozen=True)
+class _Geometry:
+    """The solve's one World and the CollisionChecker over it."""
+
+    world: World
+    checker: CollisionChecker
+
+
+def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
+                     timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
-        from tampcli.errors import SceneError
-        from tampcli.geometry.collision import CollisionChecker
-        from tampcli.geometry.scene import load_modes, load_scene  # numpy, tomllib
-        from tampcli.geometry.world import World
-        from tampcli.optimize.options import OptimizeOptions
-        from tampcli.optimize.problem import lower
-        from tampcli.optimize.solve import solve as solve_stage
         from tampcli.search.topk import TopK
 
-    with timers.stage("scene"):
-        if modes_file is None:
-            raise SceneError("the problem has a scene but the domain has no modes.toml beside "
-                             "it (or pass --modes)", domain_path)
-        modes = load_modes(modes_file, domain)
-        scene = load_scene(scene_file, domain, problem, modes=modes)
-    deadline = time.perf_counter() + options.time_limit
-    nlp_options = OptimizeOptions(waypoints=options.waypoints, seed=options.seed)
+        evaluate = _Evaluator(inputs, geometry, options,
+                              time.perf_counter() + options.bnb.time_limit)
+    modes = inputs.modes
+    topk = TopK(inputs.task, loopless=True, time_limit=options.bnb.time_limit)
+    bnb_start = time.perf_counter()
+    result = branch_and_bound(_TimedSkeletons(topk, timers), evaluate, options.bnb,
+                              is_geometric=lambda op: modes.get_mode(op.action).kind != "none",
+                              on_event=on_event)
+    timers.add("optimize", result.stats.get("optimize_seconds", 0.0))
+    timers.add("bnb", time.perf_counter() - bnb_start)
+    return _solution(inputs, geometry.world, options, result, _stats(timers, result.stats))
 
-    with timers.stage("setup"):
-        world = World(scene)
-    with world:
-        with timers.stage("setup"):
-            checker = CollisionChecker(world)
-        lowered: dict[tuple[str, ...], object] = {}
 
-        def evaluate(ops, stage, warm):
-            names = tuple(op.name for op in ops)
-            if names not in lowered:
-                lowered[names] = lower(ops, scene, modes, world, nlp_options, domain=domain,
-                                       checker=checker)
-            remaining = max(deadline - time.perf_counter(), 0.5)
-            stage_options = nlp_options if remaining >= nlp_options.time_limit else \
-                _with_time_limit(nlp_options, remaining)
-            return solve_stage(lowered[names], stage, warm=warm, options=stage_options)
+class _Evaluator:
+    """`evaluate(ops, stage, warm)` for branch and bound: lowers each skeleton once
+    and solves a stage within what is left of the solve's time."""
 
-        def is_geometric(op) -> bool:
-            return modes.get_mode(op.action).kind != "none"
+    def __init__(self, inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
+                 deadline: float):
+        from tampcli.optimize.problem import lower
+        from tampcli.optimize.solve import solve as solve_stage
 
-        topk = TopK(task, loopless=True, time_limit=options.time_limit)
-        bnb_options = BnBOptions(max_skeletons=options.max_skeletons,
-                                 time_limit=options.time_limit,
-                                 symbolic_weight=options.symbolic_weight,
-                                 anytime=options.anytime)
-        bnb_start = time.perf_counter()
-        result = branch_and_bound(_TimedSkeletons(topk, timers), evaluate, bnb_options,
-                                  is_geometric=is_geometric, on_event=on_event)
-        timers.add("optimize", result.stats.get("optimize_seconds", 0.0))
-        timers.add("bnb", time.perf_counter() - bnb_start)
-        robot = {"model": scene.robot.model, "joints": list(world.joint_names),
-                 "tool_link": world.tool_link}
+        self.inputs, self.geometry, self.deadline = inputs, geometry, deadline
+        self.options = options.optimize
+        self.lower, self.solve_stage = lower, solve_stage
+        self.lowered: dict[tuple[str, ...], object] = {}
 
-    stats = _stats(timers, started, result.stats)
-    common = dict(domain=domain_path, problem=problem_path, scene=scene_file, modes=modes_file,
-                  robot=robot, skeletons=tuple(result.skeletons), stats=stats,
-                  symbolic_weight=options.symbolic_weight, lower_bound=result.lower_bound)
+    def __call__(self, ops, stage, warm):
+        names = tuple(op.name for op in ops)
+        if names not in self.lowered:
+            self.lowered[names] = self.lower(
+                ops, self.inputs.scene, self.inputs.modes, self.geometry.world, self.options,
+                domain=self.inputs.domain, checker=self.geometry.checker)
+        remaining = max(self.deadline - time.perf_counter(), 0.5)
+        options = self.options if remaining >= self.options.time_limit else \
+            dataclasses.replace(self.options, time_limit=remaining)
+        return self.solve_stage(self.lowered[names], stage, warm=warm, options=options)
+
+
+def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result: BnBResult,
+              stats: dict) -> Solution:
+    paths = inputs.paths
+    robot = {"model": inputs.scene.robot.model, "joints": list(world.joint_names),
+             "tool_link": world.tool_link}
+    common = dict(domain=paths.domain, problem=paths.problem, scene=paths.scene,
+                  modes=paths.modes, robot=robot, skeletons=tuple(result.skeletons),
+                  stats=stats, symbolic_weight=options.bnb.symbolic_weight,
+                  lower_bound=result.lower_bound)
     if result.status != "solved":
         return Solution(status=result.status, reason=result.reason, **common)
     best = result.best
@@ -203,17 +296,11 @@ def _solve_geometric(domain_path, problem_path, scene_file, modes_file, domain, 
         **common)
 
 
-def _with_time_limit(options, seconds):
-    import dataclasses
-
-    return dataclasses.replace(options, time_limit=seconds)
-
-
-def _stats(timers: Timers, started: float, extra: dict) -> dict:
+def _stats(timers: Timers, extra: dict) -> dict:
     seconds = {k: round(v, 4) for k, v in timers.seconds.items()}
     for key in ("parse", "ground", "search", "optimize"):
         seconds.setdefault(key, 0.0)
-    seconds["total"] = round(time.perf_counter() - started, 4)
+    seconds["total"] = round(time.perf_counter() - timers.started, 4)
     stats = dict(extra)
     stats["seconds"] = seconds
     return stats

@@ -26,12 +26,6 @@ LAYERS = (
 WORLD = "tampcli.geometry.world"
 WORLD_PRIVATE = ("_pb", "_client", "_robot", "_bodies", "_fingers")
 
-# Issue 14: the start-state check leaves load_scene for the pipeline, which removes
-# this edge (and with it the cycle scene -> startcheck -> collision -> scene).
-# Drop this exclusion once that change is merged.
-EXCLUDED_EDGES = {("tampcli.geometry.scene", "tampcli.geometry.startcheck")}
-
-
 def _modules() -> dict[str, Path]:
     out = {}
     for path in PACKAGE.rglob("*.py"):
@@ -68,7 +62,7 @@ def _graph() -> dict[str, set[str]]:
     graph = {}
     for name, tree in TREES.items():
         targets = {_resolve(n) for n in _imported(tree)} - {None, name}
-        graph[name] = {t for t in targets if (name, t) not in EXCLUDED_EDGES}
+        graph[name] = targets
     return graph
 
 

@@ -399,11 +399,16 @@ def _atoms(formula):
 def test_loader_accepts_scene_and_modes(problem):
     """The real loader: names, modes against the scene, start overlaps and joint limits."""
     from tampcli.geometry import scene as scene_module
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.startcheck import check_start_state
+    from tampcli.geometry.world import World
 
     domain = parser.parse_domain_file(_domain_file(problem))
     prob = parser.parse_problem_file(problem)
     modes = scene_module.load_modes(DOMAINS / problem.parent.name / "modes.toml", domain)
-    loaded = scene_module.load_scene(_scene_file(problem), domain, prob, modes=modes)
+    loaded, source = scene_module.read_scene(_scene_file(problem), domain, prob, modes=modes)
+    with World(loaded) as world:
+        check_start_state(world, CollisionChecker(world), source)
     assert {b.name for b in loaded.bodies} == set(_Scene.load(_scene_file(problem)).bodies)
     assert {r.name for r in loaded.regions} == set(_Scene.load(_scene_file(problem)).regions)
 

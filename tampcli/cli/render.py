@@ -19,37 +19,43 @@ def add_parser(p) -> None:
                         "unless only --keyframes or --physics is asked)")
     p.add_argument("--keyframes", metavar="FILE",
                    help="also write one image (.png/.jpg) with a panel per geometric action")
-    p.add_argument("--width", type=int, default=640, help="frame width in pixels (default 640)")
-    p.add_argument("--height", type=int, default=480, help="frame height in pixels (default 480)")
-    p.add_argument("--fps", type=float, default=30.0, help="frames per second (default 30)")
+    p.add_argument("--width", type=int, default=_default("width"),
+                   help="frame width in pixels (default %(default)s)")
+    p.add_argument("--height", type=int, default=_default("height"),
+                   help="frame height in pixels (default %(default)s)")
+    p.add_argument("--fps", type=float, default=_default("fps"),
+                   help="frames per second (default %(default)g)")
     # One value per flag, so the solution path may come after it.
     p.add_argument("--camera", action="append", metavar="'FIELD=VALUE ...'",
                    help="quoted: --camera 'eye=x,y,z target=x,y,z [up=x,y,z] [fov=degrees]', "
                         "or one field per flag: --camera eye=x,y,z --camera target=x,y,z; "
                         "fields left out come from the scene's [camera], else the scene is "
                         "framed automatically")
-    p.add_argument("--workers", type=int, default=0,
-                   help="render processes (default 0: one per core)")
-    p.add_argument("--duration", type=float,
+    p.add_argument("--workers", type=int, default=_default("workers"),
+                   help="render processes (default %(default)s: one per core)")
+    p.add_argument("--duration", type=float, default=_default("duration"),
                    help="seconds of robot motion, pauses excluded (default: from the speed)")
-    p.add_argument("--speed", type=float,
+    p.add_argument("--speed", type=float, default=_default("speed"),
                    help="joint-space speed, rad/s (m/s for the planar robot)")
-    p.add_argument("--pause", type=float, default=0.4,
-                   help="seconds held at each instantaneous action (default 0.4)")
+    p.add_argument("--pause", type=float, default=_default("pause"),
+                   help="seconds held at each instantaneous action (default %(default)g)")
     p.add_argument("--no-caption", action="store_true", help="frames without the caption bar")
     p.add_argument("--physics", action="store_true",
                    help="also replay with PyBullet dynamics and report object drift")
 
 
+def _default(field: str):
+    """RenderOptions' default of `field` (a dataclass keeps it as a class attribute)."""
+    return getattr(RenderOptions, field)
+
+
 def options_from_args(args) -> RenderOptions:
-    """The RenderOptions of parsed flags; `solve --video` may reuse it."""
+    """The RenderOptions of the parsed flags of `tampcli render`."""
     return RenderOptions(
         width=args.width, height=args.height, fps=args.fps,
-        camera=parse_camera(args.camera) if getattr(args, "camera", None) else None,
-        workers=getattr(args, "workers", 0), duration=getattr(args, "duration", None),
-        speed=getattr(args, "speed", None), pause=getattr(args, "pause", 0.4),
-        physics=getattr(args, "physics", False),
-        caption=not getattr(args, "no_caption", False))
+        camera=parse_camera(args.camera) if args.camera else None, workers=args.workers,
+        duration=args.duration, speed=args.speed, pause=args.pause, physics=args.physics,
+        caption=not args.no_caption)
 
 
 def run(args, ui) -> int:

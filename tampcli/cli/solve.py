@@ -2,13 +2,51 @@
 
 from __future__ import annotations
 
+from contextlib import ExitStack
+from dataclasses import dataclass
+
 from rich.live import Live
 from rich.table import Table
 
 from tampcli import solution as solution_file
-from tampcli.bnb import Event
-from tampcli.errors import ExitCode, UsageError
-from tampcli.pipeline import SolveOptions, solve
+from tampcli.bnb import BnBOptions, Event
+from tampcli.errors import ExitCode, OptionError, UsageError
+from tampcli.optimize.options import OptimizeOptions
+from tampcli.pipeline import InputPaths, SolveOptions, solving
+
+# The options value of each SolveOptions field a flag sets.
+_STAGES = {"bnb": BnBOptions, "optimize": OptimizeOptions}
+
+
+@dataclass(frozen=True)
+class Flag:
+    """A flag of `tampcli solve` and the options field it sets; its default is
+    that field's (the only copy of it)."""
+
+    name: str
+    stage: str  # a key of _STAGES
+    field: str
+    type: type | None  # None: a switch
+    metavar: str | None
+    help: str
+    short: str | None = None
+
+    @property
+    def default(self):
+        # A dataclass keeps each plain field default as a class attribute.
+        return getattr(_STAGES[self.stage], self.field)
+
+
+FLAGS = (
+    Flag("--skeletons", "bnb", "max_skeletons", int, "K", "skeletons to draw at most", "-k"),
+    Flag("--time-limit", "bnb", "time_limit", float, "S", "seconds for the whole solve"),
+    Flag("--symbolic-weight", "bnb", "symbolic_weight", float, "W",
+         "objective = trajectory cost + W * symbolic cost"),
+    Flag("--waypoints", "optimize", "waypoints", int, "T", "waypoints per motion phase"),
+    Flag("--anytime", "bnb", "anytime", None, None,
+         "keep improving until a limit; report each improvement"),
+    Flag("--seed", "optimize", "seed", int, None, "random seed"),
+)
 
 
 def add_parser(p) -> None:
@@ -16,43 +54,52 @@ def add_parser(p) -> None:
     p.add_argument("problem", help="PDDL problem file")
     p.add_argument("--scene", help="scene.toml (default: PROBLEM's name + .scene.toml beside it)")
     p.add_argument("--modes", help="modes.toml (default: beside the domain file)")
-    p.add_argument("-k", "--skeletons", type=int, default=20, metavar="K",
-                   help="skeletons to draw at most (default 20)")
-    p.add_argument("--time-limit", type=float, default=120.0, metavar="S",
-                   help="seconds for the whole solve (default 120)")
-    p.add_argument("--symbolic-weight", type=float, default=0.1, metavar="W",
-                   help="objective = trajectory cost + W * symbolic cost (default 0.1)")
-    p.add_argument("--waypoints", type=int, default=10, metavar="T",
-                   help="waypoints per motion phase (default 10)")
-    p.add_argument("--anytime", action="store_true",
-                   help="keep improving until a limit; report each improvement")
-    p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
+    for flag in FLAGS:
+        names = (flag.short, flag.name) if flag.short else (flag.name,)
+        if flag.type is None:
+            p.add_argument(*names, dest=flag.field, action="store_true", help=flag.help)
+        else:
+            p.add_argument(*names, dest=flag.field, type=flag.type, default=flag.default,
+                           metavar=flag.metavar, help=f"{flag.help} (default %(default)g)")
     p.add_argument("--out", metavar="FILE", help="write solution.json here (whatever the outcome)")
     p.add_argument("--video", metavar="FILE", help="render the solution to FILE (.mp4 or .gif)")
 
 
+def options_from_args(args) -> SolveOptions:
+    """SolveOptions from the parsed flags; a bad value is a UsageError naming its flag."""
+    parts = {}
+    for stage, options_type in _STAGES.items():
+        flags = [flag for flag in FLAGS if flag.stage == stage]
+        try:
+            parts[stage] = options_type(**{flag.field: getattr(args, flag.field)
+                                           for flag in flags})
+        except OptionError as err:
+            flag = next((flag.name for flag in flags if flag.field == err.field), None)
+            raise UsageError(err.message, "tampcli solve", key=flag) from None
+    return SolveOptions(**parts)
+
+
 def run(args, ui) -> int:
-    try:
-        options = SolveOptions(max_skeletons=args.skeletons, time_limit=args.time_limit,
-                               symbolic_weight=args.symbolic_weight, waypoints=args.waypoints,
-                               anytime=args.anytime, seed=args.seed)
-    except ValueError as err:
-        raise UsageError(str(err), "tampcli solve") from None
-    if args.skeletons < 1 or args.time_limit <= 0 or args.symbolic_weight < 0:
-        raise UsageError("-k must be >= 1, --time-limit > 0, --symbolic-weight >= 0",
-                         "tampcli solve")
+    options = options_from_args(args)
+    render_options = None
     if args.video:  # refuse a bad video path before minutes of solving
+        from tampcli.render.options import RenderOptions
         from tampcli.render.video import check_writable, video_format
 
-        video_format(args.video, 640, 480)
+        render_options = RenderOptions()
+        video_format(args.video, render_options.width, render_options.height)
         check_writable(args.video, "--video")
+    paths = InputPaths(args.domain, args.problem, args.scene, args.modes)
     view = _LiveView(ui)
-    with view:
-        sol = solve(args.domain, args.problem, args.scene, args.modes, options, view.on_event)
-    if args.out:
-        solution_file.write(sol, args.out)
-    if args.video and sol.solved and sol.trajectory:
-        _render(args.out, sol, args.video, ui)
+    with ExitStack() as keep_open:
+        # The live view ends with the search; the World stays open for the video.
+        with view:
+            solved = keep_open.enter_context(solving(paths, options, view.on_event))
+        sol = solved.solution
+        if args.out:
+            solution_file.write(sol, args.out)
+        if args.video and sol.solved and sol.trajectory:
+            _render(solved, args.out, args.video, render_options, ui)
     if ui.json:
         ui.emit_json(solution_file.to_dict(sol))
     else:
@@ -60,10 +107,15 @@ def run(args, ui) -> int:
     return ExitCode.OK if sol.solved else ExitCode.NO_SOLUTION
 
 
-def _render(out_path, sol, video, ui) -> None:
+def _render(solved, out_path, video, options, ui) -> None:
+    """Render from what the solve holds: its inputs and its open World."""
+    from tampcli.render.inputs import RenderInputs
     from tampcli.render.video import render_solution
 
-    info = render_solution(out_path or sol, video, None, ui=ui)
+    inputs = solved.inputs
+    source = RenderInputs(solved.solution, out_path or "<solution>", inputs.scene,
+                          inputs.problem.name, inputs.modes)
+    info = render_solution(source, video, options, ui=ui, world=solved.world)
     ui.info(f"video: {info.get('path', video)}")
 
 

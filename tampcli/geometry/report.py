@@ -15,9 +15,8 @@ import numpy as np
 from tampcli.geometry.collision import CollisionChecker
 from tampcli.geometry.locate import find_modes, find_scene
 from tampcli.geometry.modes import load_modes
-from tampcli.geometry.scene import load_scene
+from tampcli.geometry.scene import read_scene
 from tampcli.geometry.startcheck import check_start_state
-from tampcli.geometry.tomlsrc import read_toml
 from tampcli.geometry.world import World
 from tampcli.pddl import ast
 
@@ -36,11 +35,11 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, domain_path, problem
         return None
     modes_path = modes_path or find_modes(domain_path)
     modes = load_modes(modes_path, domain) if modes_path else None
-    scene = load_scene(scene_path, domain, problem, modes=modes, geometric=False)
+    scene, src = read_scene(scene_path, domain, problem, modes=modes)
     warnings: list[str] = []
     with World(scene) as world:
         checker = CollisionChecker(world)
-        check_start_state(scene, read_toml(str(scene_path)), world, checker)
+        check_start_state(world, checker, src)
         contacts = sorted(checker.distances(world.start, activation=REPORT_DISTANCE,
                                             static=True), key=lambda c: c.distance)
         warnings += _reach_warnings(world, scene, _goal_names(problem.goal))

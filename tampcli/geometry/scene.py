@@ -33,13 +33,13 @@ from tampcli.geometry.scene_check import (
     pddl_objects,
 )
 from tampcli.geometry.scene_parse import build_scene
-from tampcli.geometry.tomlsrc import read_toml
+from tampcli.geometry.tomlsrc import TomlSource, read_toml
 from tampcli.pddl import ast
 
 __all__ = [
     "COLORS", "DEFAULT_COLOR", "PANDA_READY", "ROBOT_MODELS", "SHAPES", "Body", "Camera",
     "Mode", "Modes", "Region", "RobotSpec", "Scene", "check_modes_against_scene", "find_modes",
-    "find_scene", "load_modes", "load_scene", "pddl_objects",
+    "find_scene", "load_modes", "load_scene", "pddl_objects", "read_scene",
 ]
 
 
@@ -47,21 +47,24 @@ __all__ = [
 
 
 def load_scene(path: str | Path, domain: ast.Domain | None = None,
-               problem: ast.Problem | None = None, modes=None,
-               geometric: bool = True) -> Scene:
+               problem: ast.Problem | None = None, modes=None, *,
+               geometric: bool = False) -> Scene:
     """Read and check a scene file against the problem (and the modes, when given).
 
-    With `geometric`, also build the world once and refuse overlapping bodies
-    and a start configuration outside the joint limits or in collision.
+    The start state is not checked here: that takes a World, which the caller
+    builds once and hands to `startcheck.check_start_state`. `geometric` is
+    accepted and ignored, for callers written when loading built a World of its own.
     """
+    return read_scene(path, domain, problem, modes)[0]
+
+
+def read_scene(path: str | Path, domain: ast.Domain | None = None,
+               problem: ast.Problem | None = None, modes=None) -> tuple[Scene, TomlSource]:
+    """`load_scene`, and the parsed file that locates later errors (the start check's)."""
     src = read_toml(str(path))
     scene = build_scene(src)
     if problem is not None:
         scene = check_against_problem(src, scene, domain, problem)
         if modes is not None and domain is not None:
             check_modes_against_scene(src, scene, modes, domain, problem)
-    if geometric:
-        from tampcli.geometry.startcheck import check_start_state
-
-        check_start_state(scene, src)
-    return scene
+    return scene, src

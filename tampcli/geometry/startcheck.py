@@ -45,21 +45,12 @@ def start_problems(world, checker) -> list[tuple[str, str, str]]:
     return problems
 
 
-def check_start_state(scene, src=None, world=None, checker=None) -> None:
-    """Raise a located SceneError for the first problem of the start state.
-
-    Builds a World and a CollisionChecker unless given them.
-    """
-    if world is None:
-        from tampcli.geometry.collision import CollisionChecker
-        from tampcli.geometry.world import World
-
-        with World(scene) as own:
-            problems = start_problems(own, CollisionChecker(own))
-    else:
-        problems = start_problems(world, checker)
+def check_start_state(world, checker, src=None) -> None:
+    """Raise a located SceneError for the first problem of the start state of
+    `world.scene`; `src` (the scene's TomlSource) places it on the key's line."""
+    problems = start_problems(world, checker)
     if problems:
-        raise located_error(scene, src, *problems[0])
+        raise located_error(world.scene, src, *problems[0])
 
 
 def located_error(scene, src, key: str, subject: str, message: str) -> SceneError:

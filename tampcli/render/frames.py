@@ -62,26 +62,34 @@ class FrameRenderer:
 
 
 @contextmanager
-def frame_renderer(job: FrameJob):
+def frame_renderer(job: FrameJob, world=None):
+    """A FrameRenderer on `world` (the caller's open World of `job.scene`, its
+    regions already drawn: see `scenery.add_regions`), or on a World of its own."""
+    if world is not None:
+        yield FrameRenderer(world, job)
+        return
     from tampcli.geometry.world import World
 
-    with World(job.scene) as world:
-        add_regions(world)
-        yield FrameRenderer(world, job)
+    with World(job.scene) as own:
+        add_regions(own)
+        yield FrameRenderer(own, job)
 
 
 def render_frames(job: FrameJob, states: Sequence[FrameState], workers: int = 1,
-                  on_frame: Callable[[], None] | None = None) -> Iterator[np.ndarray]:
+                  on_frame: Callable[[], None] | None = None,
+                  world=None) -> Iterator[np.ndarray]:
     """The frames of `states`, in order, rendered by `workers` processes.
 
-    A run of identical states (a pause) is rendered once and repeated.
+    A run of identical states (a pause) is rendered once and repeated. This
+    process renders on `world` when given (see `frame_renderer`); each worker
+    process builds its own (a PyBullet client belongs to one process).
     """
     unique, repeats = _runs(states)
     workers = workers_used(len(unique), workers)
     if workers == 1:
-        frames = _render_here(job, unique)
+        frames = _render_here(job, unique, world)
     else:
-        frames = _render_in_workers(job, unique, workers)
+        frames = _render_in_workers(job, unique, workers, world)
     try:
         for frame, count in zip(frames, repeats, strict=True):
             for _ in range(count):
@@ -121,13 +129,13 @@ def _key(state: FrameState) -> tuple:
     return state.q, poses, state.fingers_closed, state.label, state.step, state.steps
 
 
-def _render_here(job, states):
-    with frame_renderer(job) as renderer:
+def _render_here(job, states, world):
+    with frame_renderer(job, world) as renderer:
         for state in states:
             yield renderer.render(state)
 
 
-def _render_in_workers(job, states, workers):
+def _render_in_workers(job, states, workers, world):
     """Slot 0 is this process (one start-up fewer); slots 1.. are spawned."""
     chunks = [list(states[i:i + CHUNK]) for i in range(0, len(states), CHUNK)]
     # spawn, not fork: the parent may hold a PyBullet client and a progress thread.
@@ -140,7 +148,7 @@ def _render_in_workers(job, states, workers):
     try:
         for process in processes.values():
             process.start()
-        with frame_renderer(job) as renderer:
+        with frame_renderer(job, world) as renderer:
             for c, chunk in enumerate(chunks):
                 w = c % workers
                 if w == 0:

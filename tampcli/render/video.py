@@ -1,9 +1,11 @@
-"""`render_solution`: a solution.json (or Solution) -> mp4 / gif, keyframe strip,
-and optionally a physics check. `solve --video` and `tampcli render` call it."""
+"""`render_solution`: a solution.json (or Solution, or the inputs a solve already
+holds) -> mp4 / gif, keyframe strip, and optionally a physics check. `solve
+--video` and `tampcli render` call it."""
 
 from __future__ import annotations
 
 import time
+from contextlib import contextmanager
 from pathlib import Path
 
 from tampcli.render.camera import choose_camera
@@ -16,18 +18,24 @@ from tampcli.render.frames import (
     render_frames,
     workers_used,
 )
-from tampcli.render.inputs import check_against_world, load_inputs, mode_kind_of
+from tampcli.render.inputs import RenderInputs, check_against_world, load_inputs, mode_kind_of
 from tampcli.render.options import RenderOptions, check_writable, image_format, video_format
 from tampcli.render.progress import progress
 from tampcli.render.replay import Replay
-from tampcli.render.scenery import visible_points
+from tampcli.render.scenery import add_regions, visible_points
 from tampcli.solution import Solution
 
 
-def render_solution(source: Solution | str | Path, out_path: str | Path | None,
-                    options: RenderOptions | None = None, ui=None,
-                    keyframes: str | Path | None = None) -> dict:
+def render_solution(source: RenderInputs | Solution | str | Path,
+                    out_path: str | Path | None, options: RenderOptions | None = None,
+                    ui=None, keyframes: str | Path | None = None, world=None) -> dict:
     """Replay `source` into `out_path` (.mp4 or .gif) and/or a keyframe strip.
+
+    `source` is a solution file or value (its scene and modes are then read
+    here), or RenderInputs a caller already holds. `world`, when given, is the
+    caller's open World of that scene: rendering borrows it (adding the goal
+    regions' plates) instead of building one; a physics replay always builds
+    its own, since it changes the world's dynamics.
 
     Returns what was made: `path`, `frames`, `seconds` (video length),
     `width`, `height`, `fps`, `render_seconds` (wall time), and `keyframes`,
@@ -42,22 +50,25 @@ def render_solution(source: Solution | str | Path, out_path: str | Path | None,
         if path is not None:
             check_writable(path, key)
     started = time.perf_counter()
-    inputs = load_inputs(source)
-    replay, camera = _plan(inputs, options)
-    job = FrameJob(inputs.scene, camera, options.width, options.height, inputs.problem_name,
-                   options.caption)
-    report: dict = {"path": str(out_path) if out_path else None, "frames": 0,
-                    "seconds": round(float(replay.duration), 3), "width": options.width,
-                    "height": options.height, "fps": options.fps,
-                    "camera": {"eye": camera.eye, "target": camera.target, "fov": camera.fov}}
-    if kind is not None:
-        states = replay.states(options.fps)
-        report["frames"] = _write_video(kind, out_path, job, states, options, ui)
-        report["distinct_frames"] = distinct_count(states)
-        report["workers"] = workers_used(report["distinct_frames"], options.worker_count)
-    if keyframes is not None:
-        report["keyframes"], report["panels"] = str(keyframes), _write_strip(
-            keyframes, job, replay)
+    inputs = source if isinstance(source, RenderInputs) else load_inputs(source)
+    with _borrowed_or_own(inputs.scene, world) as world:
+        replay, camera = _plan(inputs, world, options)
+        add_regions(world)
+        job = FrameJob(inputs.scene, camera, options.width, options.height,
+                       inputs.problem_name, options.caption)
+        report: dict = {"path": str(out_path) if out_path else None, "frames": 0,
+                        "seconds": round(float(replay.duration), 3), "width": options.width,
+                        "height": options.height, "fps": options.fps,
+                        "camera": {"eye": camera.eye, "target": camera.target,
+                                   "fov": camera.fov}}
+        if kind is not None:
+            states = replay.states(options.fps)
+            report["frames"] = _write_video(kind, out_path, job, states, options, ui, world)
+            report["distinct_frames"] = distinct_count(states)
+            report["workers"] = workers_used(report["distinct_frames"], options.worker_count)
+        if keyframes is not None:
+            report["keyframes"], report["panels"] = str(keyframes), _write_strip(
+                keyframes, job, replay, world)
     if options.physics:
         from tampcli.render.physics import replay_physics
 
@@ -66,28 +77,36 @@ def render_solution(source: Solution | str | Path, out_path: str | Path | None,
     return report
 
 
-def _plan(inputs, options: RenderOptions):
-    """Check the solution against a World, then time it and place the camera."""
+@contextmanager
+def _borrowed_or_own(scene, world):
+    if world is not None:
+        yield world
+        return
     from tampcli.geometry.world import World
 
-    with World(inputs.scene) as world:
-        check_against_world(inputs, world)
-        replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind_of(inputs.modes),
-                        duration=options.duration, speed=options.speed, pause=options.pause)
-        points = None
-        if inputs.scene.camera is None:
-            points = visible_points(world, replay.states(min(options.fps, 4.0)))
-        bar = Captioner.bar_height(options.height) / options.height if options.caption else 0.0
-        camera = choose_camera(options.camera, inputs.scene.camera, points,
-                               options.width / options.height, reserve_bottom=bar)
+    with World(scene) as own:
+        yield own
+
+
+def _plan(inputs, world, options: RenderOptions):
+    """Check the solution against the World, then time it and place the camera."""
+    check_against_world(inputs, world)
+    replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind_of(inputs.modes),
+                    duration=options.duration, speed=options.speed, pause=options.pause)
+    points = None
+    if inputs.scene.camera is None:
+        points = visible_points(world, replay.states(min(options.fps, 4.0)))
+    bar = Captioner.bar_height(options.height) / options.height if options.caption else 0.0
+    camera = choose_camera(options.camera, inputs.scene.camera, points,
+                           options.width / options.height, reserve_bottom=bar)
     return replay, camera
 
 
-def _write_video(kind, out_path, job, states, options, ui) -> int:
+def _write_video(kind, out_path, job, states, options, ui, world) -> int:
     writer = open_writer(kind, out_path, options.fps, options.width, options.height)
     try:
         with progress(ui, len(states), f"rendering {Path(out_path).name}") as advance:
-            for frame in render_frames(job, states, options.worker_count, advance):
+            for frame in render_frames(job, states, options.worker_count, advance, world):
                 writer.append(frame)
         writer.close()
     except BaseException:
@@ -105,11 +124,11 @@ def _discard(writer, out_path) -> None:
     Path(out_path).unlink(missing_ok=True)
 
 
-def _write_strip(path, job, replay) -> int:
+def _write_strip(path, job, replay, world) -> int:
     states = replay.keyframes()
     if not states:  # no geometric action: show where the robot starts and ends
         states = [replay.state_at(0.0), replay.state_at(replay.duration)]
-    with frame_renderer(job) as renderer:
+    with frame_renderer(job, world) as renderer:
         panels = [renderer.render(state) for state in states]
     save_image(keyframe_strip(panels), path)
     return len(panels)

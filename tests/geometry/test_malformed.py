@@ -13,8 +13,10 @@ from pathlib import Path
 import pytest
 
 from tampcli.errors import SceneError
-from tampcli.geometry.scene import load_modes, load_scene
+from tampcli.geometry.scene import load_modes
 from tampcli.pddl import parser
+
+from .loading import load_checked
 
 HERE = Path(__file__).parent
 CASES = sorted((HERE / "malformed").glob("*.toml"))
@@ -47,7 +49,7 @@ def test_malformed_file_fails_located(path, pddl):
         if path.name.endswith(".modes.toml"):
             load_modes(path, domain)
         else:
-            load_scene(path, domain, problem, modes=modes)
+            load_checked(path, domain, problem, modes)
     error = info.value
     assert error.path == str(path)
     assert (error.line, error.key) == (line, key), error.render()

@@ -6,8 +6,9 @@ import pytest
 
 from tampcli.geometry.locate import find_modes
 from tampcli.geometry.modes import load_modes
-from tampcli.geometry.scene import load_scene
 from tampcli.pddl import parser
+
+from .loading import load_checked
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENES = sorted(ROOT.glob("problems/*/*.scene.toml"))
@@ -25,5 +26,5 @@ def test_library_scene_loads(scene_path):
     problem = parser.parse_problem_file(str(problem_path))
     modes_path = find_modes(domain_path)
     modes = load_modes(modes_path, domain) if modes_path else None
-    scene = load_scene(scene_path, domain, problem, modes=modes)
+    scene = load_checked(scene_path, domain, problem, modes)
     assert scene.bodies

@@ -7,6 +7,8 @@ from tampcli.errors import SceneError
 from tampcli.geometry.scene import find_modes, find_scene, load_modes, load_scene
 from tampcli.pddl import parser
 
+from .loading import load_checked
+
 DATA = Path(__file__).parent / "data"
 
 
@@ -68,10 +70,10 @@ def test_resting_contact_is_not_overlap(tmp_path, domain, problem, sink, refused
     path = tmp_path / "p01.scene.toml"
     path.write_text(text)
     if not refused:
-        load_scene(path, domain, problem)
+        load_checked(path, domain, problem)
         return
     with pytest.raises(SceneError) as info:
-        load_scene(path, domain, problem)
+        load_checked(path, domain, problem)
     assert info.value.key == "objects.pose" and "overlaps 'table'" in info.value.message
     assert info.value.line == text.splitlines().index(
         f"pose = [0.45, -0.2, {0.025 - sink}, 0.3]") + 1
@@ -87,12 +89,12 @@ def test_planar_robot_scene(tmp_path, domain, problem):
         'pose = [0.3, 0.3, 0.025]\n'
         '[[objects]]\nname = "b"\nshape = "sphere"\nsize = [0.025]\npose = [-0.3, 0.3, 0.025]\n'
         '[[regions]]\nname = "goal"\non = "table"\ncenter = [0.5, -0.5]\nsize = [0.2, 0.2]\n')
-    scene = load_scene(path, domain, problem)
+    scene = load_checked(path, domain, problem)
     assert scene.robot.model == "planar" and scene.robot.radius == 0.04
     # Starting inside the cylinder is a collision at the start.
     path.write_text(path.read_text().replace("base = [0.0, 0.0, 0.025]",
                                              "base = [0.3, 0.3, 0.025]"))
     with pytest.raises(SceneError) as info:
-        load_scene(path, domain, problem)
+        load_checked(path, domain, problem)
     assert info.value.key == "robot.start" and "planar_body" in info.value.message
     assert info.value.source_line == "base = [0.3, 0.3, 0.025]"

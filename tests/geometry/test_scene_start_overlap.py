@@ -9,8 +9,9 @@ from pathlib import Path
 import pytest
 
 from tampcli.errors import SceneError
-from tampcli.geometry.scene import load_scene
 from tampcli.pddl import parser
+
+from .loading import load_checked
 
 DATA = Path(__file__).parent / "data"
 
@@ -64,7 +65,7 @@ def pddl():
 def _load(tmp_path, text, pddl):
     path = tmp_path / "p01.scene.toml"
     path.write_text(text)
-    return path, load_scene(path, *pddl)
+    return path, load_checked(path, *pddl)
 
 
 def test_the_shelf_parts_do_overlap(tmp_path):
@@ -72,7 +73,7 @@ def test_the_shelf_parts_do_overlap(tmp_path):
     path = tmp_path / "p01.scene.toml"
     path.write_text(BASE + SHELF + BOARD)
     with pytest.raises(SceneError) as info:
-        load_scene(path)
+        load_checked(path)
     assert "'shelf-board' overlaps 'shelf-side' by 20.0 mm" in info.value.message
 
 

@@ -6,6 +6,7 @@ import pytest
 from PIL import Image
 
 from tampcli.errors import SolutionFileError, UsageError
+from tampcli.geometry.world import World
 from tampcli.render.encode import strip_geometry
 from tampcli.render.options import RenderOptions
 from tampcli.render.video import render_solution
@@ -168,7 +169,9 @@ def test_a_pause_is_rendered_once(panda_json):
     from tampcli.render.inputs import load_inputs
     from tampcli.render.video import _plan
 
-    replay, _ = _plan(load_inputs(panda_json), RenderOptions(**SMALL))
+    inputs = load_inputs(panda_json)
+    with World(inputs.scene) as world:
+        replay, _ = _plan(inputs, world, RenderOptions(**SMALL))
     states = replay.states(8)
     unique, repeats = _runs(states)
     assert sum(repeats) == len(states) and len(unique) < len(states)
@@ -183,7 +186,8 @@ def test_abandoning_a_parallel_render_stops_its_workers(panda_json):
     from tampcli.render.video import _plan
 
     inputs = load_inputs(panda_json)
-    replay, camera = _plan(inputs, RenderOptions(**SMALL))
+    with World(inputs.scene) as world:
+        replay, camera = _plan(inputs, world, RenderOptions(**SMALL))
     frames = render_frames(FrameJob(inputs.scene, camera, 64, 48), replay.states(8), workers=2)
     assert next(frames).shape == (48, 64, 3)
     frames.close()
@@ -216,7 +220,8 @@ def test_a_worker_that_dies_is_an_error_not_a_hang(panda_json):
     from tampcli.render.video import _plan
 
     inputs = load_inputs(panda_json)
-    replay, camera = _plan(inputs, RenderOptions(**{**SMALL, "pause": 0.0}))
+    with World(inputs.scene) as world:
+        replay, camera = _plan(inputs, world, RenderOptions(**{**SMALL, "pause": 0.0}))
     states = replay.states(60)
     assert len(states) > 60
     frames = render_frames(FrameJob(inputs.scene, camera, 32, 24), states, workers=2)

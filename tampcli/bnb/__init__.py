@@ -1,0 +1,377 @@
+"""Branch and bound over ranked skeletons (the seed's §5).
+
+Skeletons arrive lazily from the top-k generator in non-decreasing symbolic
+cost. Each is evaluated cheap to expensive — final placements, keyframes,
+full path — and dropped at the first stage that fails. Geometry reaches this
+module only as a plain callable `evaluate(skeleton, stage, warm)`, so the
+search can be tested with toy functions. `prefix_tree.py` keeps the keyframe
+results by prefix (memo, warm starts, infeasible prefixes).
+
+Objective of a solution: trajectory cost + w * symbolic cost.
+
+Bounds, honestly labelled:
+- proved: a trajectory cost is >= 0, so every skeleton not yet drawn has an
+  objective >= w * (its symbolic cost) >= w * (the last symbolic cost drawn);
+  when that reaches the incumbent, the incumbent is optimal and we stop.
+  An infeasibility is proved only when the evaluator says so (`proved`,
+  e.g. a region out of reach by a distance argument).
+- heuristic: the keyframe NLP's optimum (a lower bound of the path cost for
+  those keyframes, by Cauchy–Schwarz, but a *local* optimum) prunes a
+  skeleton that cannot beat the incumbent; an NLP that fails to find a
+  feasible point marks a skeleton (and, at the keyframe stage, the shortest
+  failing prefix, which prunes every skeleton sharing it) infeasible.
+`Solution.lower_bound` holds only proved values.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
+from tampcli.errors import require_int, require_number
+from tampcli.solution import SkeletonRecord
+
+STAGES = ("final", "keyframes", "path")
+TIE = 1e-12  # objectives this close count as equal when the symbolic bound is compared
+
+
+@dataclass(frozen=True)
+class BnBOptions:
+    """Options of the skeleton search (checked when built).
+
+    max_skeletons: skeletons drawn at most (a count, `-k`).
+    time_limit: seconds for the whole search, drawing skeletons included (checked
+        between NLP solves); infinity is no limit.
+    symbolic_weight: w (>= 0) in objective = trajectory cost (rad^2 or m^2) + w * symbolic
+        cost; the default 0.1 makes ten unit-cost actions weigh as much as one rad^2 of
+        motion: a tie-breaker towards shorter plans that rarely overrides geometry.
+    anytime: keep improving until a limit instead of stopping at the first solution
+        whose optimality cannot be improved by a cheaper skeleton.
+    prefix_pruning: when a skeleton's keyframe problem fails, find its shortest failing
+        prefix and forbid every skeleton that starts with it.
+    """
+
+    max_skeletons: int = 20
+    time_limit: float = 120.0
+    symbolic_weight: float = 0.1
+    anytime: bool = False
+    prefix_pruning: bool = True
+
+    def __post_init__(self):
+        require_int(self.max_skeletons, "max_skeletons", 1)
+        require_number(self.time_limit, "time_limit", positive=True, unit="s", finite=False)
+        require_number(self.symbolic_weight, "symbolic_weight")
+
+
+class StageResult(Protocol):
+    status: str  # "solved" | "infeasible" | "limit"
+    cost: float | None
+    worst_constraint: str | None
+
+
+class SkeletonSource(Protocol):
+    """What branch and bound needs of the top-k generator."""
+
+    def __iter__(self): ...
+
+    def forbid_prefix(self, names: tuple[str, ...]) -> None: ...
+
+
+Evaluate = Callable[[Sequence[Any], str, Any], StageResult]
+
+
+@dataclass
+class Event:
+    """One step of the search, for live displays."""
+
+    kind: str  # "skeleton" | "stage" | "outcome" | "incumbent" | "stop"
+    rank: int
+    plan: tuple[str, ...] = ()
+    symbolic_cost: float | None = None
+    stage: str | None = None
+    outcome: str | None = None
+    cost: float | None = None
+    bound: float | None = None
+    seconds: float = 0.0
+    message: str | None = None
+
+
+@dataclass
+class BnBResult:
+    status: str  # "solved" | "unsolvable" | "limit"
+    reason: str | None
+    best: Any  # the path-stage result of the incumbent, or None
+    best_plan: tuple[Any, ...] = ()
+    best_symbolic_cost: float | None = None
+    best_objective: float | None = None
+    lower_bound: float | None = None
+    optimal: bool = False
+    skeletons: list[SkeletonRecord] = field(default_factory=list)
+    stats: dict = field(default_factory=dict)
+    improvements: list[tuple[float, float]] = field(default_factory=list)  # (seconds, objective)
+
+
+def branch_and_bound(
+    skeletons: SkeletonSource | Iterable,
+    evaluate: Evaluate,
+    options: BnBOptions = BnBOptions(),
+    is_geometric: Callable[[Any], bool] = lambda op: True,
+    on_event: Callable[[Event], None] | None = None,
+    clock: Callable[[], float] = time.perf_counter,
+) -> BnBResult:
+    """Search skeletons best-first with staged NLP bounds; see the module docstring.
+
+    `skeletons` yields plans with `.operators` (each with `.name`) and `.cost`.
+    `is_geometric(op)` tells which actions end a keyframe (prefixes worth testing).
+    `evaluate(ops, stage, warm)` solves one stage; `warm` is the result of an earlier
+    stage (or of a prefix's keyframes), passed through untouched.
+    """
+    search = _Search(skeletons, evaluate, options, is_geometric, on_event, clock)
+    return search.run()
+
+
+@dataclass(frozen=True)
+class _Incumbent:
+    objective: float
+    result: Any  # the path-stage result
+    plan: tuple[Any, ...]
+    symbolic: float
+
+
+@dataclass
+class _Trial:
+    """One drawn skeleton on its way through the stages."""
+
+    rank: int
+    ops: tuple[Any, ...]
+    names: tuple[str, ...]
+    symbolic: float
+    proved_bound: float
+    started: float
+    outcome: str = "solved"
+    reason: str | None = None
+    reached: str | None = None
+    heuristic_bound: float | None = None
+    nlp_cost: float | None = None
+    path_result: Any = None
+
+
+class _Search:
+    """The state of one branch and bound: incumbent, records, statistics."""
+
+    def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock):
+        self.skeletons, self.evaluate, self.options = skeletons, evaluate, options
+        self.is_geometric, self.clock = is_geometric, clock
+        self.emit = on_event or (lambda event: None)
+        self.w = options.symbolic_weight
+        self.started = clock()
+        self.tree = PrefixTree()
+        self.evaluated: dict[tuple[str, ...], int] = {}  # geometric actions -> rank
+        self.records: list[SkeletonRecord] = []
+        self.stats = {"skeletons_generated": 0, "skeletons_optimized": 0,
+                      "skeletons_pruned": 0, "skeletons_infeasible": 0, "nlp_solves": 0,
+                      "nlp_iterations": 0, "prefixes_forbidden": 0, "optimize_seconds": 0.0}
+        self.incumbent: _Incumbent | None = None
+        self.improvements: list[tuple[float, float]] = []
+        self.failures: list[tuple[int, tuple[str, ...], str, str]] = []  # rank, plan, stage, why
+        self.deepest_feasible: tuple[str, ...] = ()
+        self.all_proved_infeasible = True
+        self.rank = 0
+
+    def elapsed(self) -> float:
+        return self.clock() - self.started
+
+    def run(self) -> BnBResult:
+        iterator = iter(self.skeletons)
+        while True:
+            if self.elapsed() >= self.options.time_limit:
+                stop = "time"
+                break
+            if self.rank >= self.options.max_skeletons:
+                stop = "skeletons"
+                break
+            plan = next(iterator, None)
+            if plan is None:
+                stop = "exhausted"
+                break
+            trial = self._draw(plan)
+            if self._cannot_beat_incumbent(trial):
+                stop = "optimal"
+                break
+            if self._pruned_before_nlp(trial):
+                continue
+            self._run_stages(trial)
+            self._record(trial)
+        return self._result(stop)
+
+    def _draw(self, plan) -> _Trial:
+        self.rank += 1
+        self.stats["skeletons_generated"] += 1
+        ops = tuple(plan.operators)
+        names = tuple(op.name for op in ops)
+        symbolic = float(plan.cost)
+        trial = _Trial(self.rank, ops, names, symbolic, self.w * symbolic, self.clock())
+        self.emit(Event("skeleton", trial.rank, names, symbolic, bound=trial.proved_bound,
+                        seconds=self.elapsed()))
+        return trial
+
+    def _cannot_beat_incumbent(self, trial: _Trial) -> bool:
+        """Every skeleton from here on is at least this expensive: the incumbent is optimal."""
+        if self.incumbent is None or trial.proved_bound < self.incumbent.objective - TIE:
+            return False
+        self.records.append(SkeletonRecord(
+            trial.rank, trial.names, trial.symbolic, "not reached", trial.proved_bound,
+            "proved", None, None, None, 0.0, "cannot beat the incumbent (symbolic bound)"))
+        return True
+
+    def _pruned_before_nlp(self, trial: _Trial) -> bool:
+        """Pruned by an argument that holds whatever the geometry.
+
+        Symbolic-only actions add no motion and no constraint: a skeleton whose
+        geometric actions are those of one already evaluated (say, with `cook`
+        moved past the last motion) has the same trajectory NLP, and a symbolic
+        cost no lower (skeletons arrive in non-decreasing cost): it cannot win.
+        """
+        motion = tuple(n for op, n in zip(trial.ops, trial.names, strict=True)
+                       if self.is_geometric(op))
+        twin = self.evaluated.get(motion)
+        blocked = self.tree.blocked(trial.names) if twin is None else None
+        if twin is None and blocked is None:
+            self.stats["skeletons_optimized"] += 1
+            self.evaluated[motion] = trial.rank
+            return False
+        self.stats["skeletons_pruned"] += 1
+        why = (f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
+               if twin is not None else f"shares the infeasible prefix {' '.join(blocked)}")
+        self.records.append(SkeletonRecord(trial.rank, trial.names, trial.symbolic, "pruned",
+                                           trial.proved_bound, "proved", None, None, None,
+                                           0.0, why))
+        self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, outcome="pruned",
+                        message=why))
+        return True
+
+    def _stage(self, ops, stage: str, warm):
+        t0 = self.clock()
+        result = self.evaluate(ops, stage, warm)
+        self.stats["nlp_solves"] += getattr(result, "nlp_solves", 1) or 1
+        self.stats["nlp_iterations"] += getattr(result, "iterations", 0) or 0
+        self.stats["optimize_seconds"] += self.clock() - t0
+        return result
+
+    def _run_stages(self, trial: _Trial) -> None:
+        """Final placements, keyframes, full path: stop at the first that fails or
+        whose keyframe bound cannot beat the incumbent."""
+        warm = self.tree.warm_for(trial.names)
+        for stage in STAGES:
+            trial.reached = stage
+            self.emit(Event("stage", trial.rank, trial.names, trial.symbolic, stage=stage,
+                            seconds=self.elapsed()))
+            result = self._stage(trial.ops, stage, warm)
+            if stage == "keyframes":
+                self.tree.put(trial.names, result)
+            if result.status != "solved":
+                self._stage_failed(trial, stage, result)
+                return
+            warm = result
+            if stage == "keyframes" and result.cost is not None \
+                    and self._keyframe_bound_prunes(trial, result.cost):
+                return
+            if stage == "path":
+                trial.path_result, trial.nlp_cost = result, result.cost
+
+    def _stage_failed(self, trial: _Trial, stage: str, result) -> None:
+        trial.outcome = "infeasible"
+        trial.reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
+        if not getattr(result, "proved", False) or result.status == "limit":
+            self.all_proved_infeasible = False
+        if stage == "keyframes" and self.options.prefix_pruning \
+                and result.status == "infeasible":
+            prefix = shortest_failing_prefix(trial.ops, trial.names, self.tree, self._stage,
+                                              self.is_geometric)
+            if prefix is not None and prefix != trial.names \
+                    and hasattr(self.skeletons, "forbid_prefix"):
+                self.skeletons.forbid_prefix(prefix)
+                self.stats["prefixes_forbidden"] += 1
+                trial.reason += f" (prefix {' '.join(prefix)} is infeasible)"
+
+    def _keyframe_bound_prunes(self, trial: _Trial, keyframe_cost: float) -> bool:
+        trial.heuristic_bound = keyframe_cost + self.w * trial.symbolic
+        if (self.incumbent is not None and not self.options.anytime
+                and trial.heuristic_bound >= self.incumbent.objective):
+            trial.outcome = "pruned"
+            trial.reason = (f"keyframe bound {trial.heuristic_bound:.4g} >= incumbent "
+                            f"{self.incumbent.objective:.4g} (heuristic)")
+            return True
+        if len(trial.names) > len(self.deepest_feasible):
+            self.deepest_feasible = trial.names
+        return False
+
+    def _record(self, trial: _Trial) -> None:
+        total = None
+        if trial.outcome == "solved" and trial.path_result is not None:
+            total = trial.nlp_cost + self.w * trial.symbolic
+            if self.incumbent is None or total < self.incumbent.objective:
+                self.incumbent = _Incumbent(total, trial.path_result, trial.ops, trial.symbolic)
+                self.improvements.append((self.elapsed(), total))
+                self.emit(Event("incumbent", trial.rank, trial.names, trial.symbolic,
+                                cost=trial.nlp_cost, bound=total, seconds=self.elapsed()))
+        elif trial.outcome == "infeasible":
+            self.stats["skeletons_infeasible"] += 1
+            self.failures.append((trial.rank, trial.names, trial.reached, trial.reason or ""))
+        elif trial.outcome == "pruned":
+            self.stats["skeletons_pruned"] += 1
+        heuristic = trial.heuristic_bound is not None
+        self.records.append(SkeletonRecord(
+            trial.rank, trial.names, trial.symbolic, trial.outcome,
+            trial.heuristic_bound if heuristic else trial.proved_bound,
+            "heuristic" if heuristic else "proved", trial.reached, trial.nlp_cost, total,
+            self.clock() - trial.started, trial.reason))
+        self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, stage=trial.reached,
+                        outcome=trial.outcome, cost=trial.nlp_cost, bound=total,
+                        seconds=self.elapsed(), message=trial.reason))
+
+    def _result(self, stop: str) -> BnBResult:
+        # A trajectory cost is >= 0 and skeletons come in non-decreasing symbolic
+        # cost, so no solution has an objective below w * (the first symbolic cost).
+        proved_lb = self.w * self.records[0].symbolic_cost if self.records else None
+        self.stats["stop"] = stop
+        self.stats["seconds"] = self.elapsed()
+        # When the first solution came: what a user waits for before `--anytime` or the
+        # search for a better skeleton goes on.
+        self.stats["first_solution_seconds"] = \
+            self.improvements[0][0] if self.improvements else None
+        self.emit(Event("stop", self.rank, message=stop, seconds=self.elapsed()))
+        best = self.incumbent
+        if best is not None:
+            # "optimal" here means: no skeleton not yet drawn can beat the incumbent. Its
+            # own trajectory is a local optimum of its NLP, which we do not claim.
+            return BnBResult("solved", None, best.result, best.plan, best.symbolic,
+                             best.objective, proved_lb, stop == "optimal", self.records,
+                             self.stats, self.improvements)
+        status = "limit"
+        if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):
+            status = "unsolvable"
+        reason = _explain(stop, self.rank, self.failures, self.deepest_feasible, self.options)
+        return BnBResult(status, reason, None, (), None, None, proved_lb, False, self.records,
+                         self.stats, self.improvements)
+
+
+def _explain(stop_reason, tried, failures, deepest_feasible, options) -> str:
+    if tried == 0:
+        return "no skeleton: the task is symbolically unsolvable"
+    parts = []
+    limits = {"time": f"time limit ({options.time_limit:g} s) reached",
+              "skeletons": f"skeleton limit ({options.max_skeletons}) reached",
+              "exhausted": "every skeleton was tried"}
+    parts.append(f"{limits.get(stop_reason, stop_reason)} after {tried} skeleton(s), "
+                 "none geometrically feasible")
+    if deepest_feasible:
+        parts.append(f"deepest feasible keyframe sequence: {' '.join(deepest_feasible)}")
+    for rank, plan, _stage, why in failures[:3]:
+        parts.append(f"#{rank} {' '.join(plan)}: {why}")
+    if len(failures) > 3:
+        parts.append(f"... and {len(failures) - 3} more")
+    return "; ".join(parts)
