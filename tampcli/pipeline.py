@@ -26,9 +26,9 @@ from tampcli.solution import Phase, Solution
 if TYPE_CHECKING:  # numpy, pybullet and FCL behind these: imported only for a scene
     from tampcli.geometry.collision import CollisionChecker
     from tampcli.geometry.model import Scene
-    from tampcli.geometry.modes import Modes
     from tampcli.geometry.tomlsrc import TomlSource
     from tampcli.geometry.world import World
+    from tampcli.optimize.modes import Modes
     from tampcli.task.task import Task
 
 
@@ -187,7 +187,8 @@ def read_inputs(paths: InputPaths, timers: Timers) -> ParsedInputs:
                        str(modes_file) if modes_file else None)
     with timers.stage("setup"):
         from tampcli.errors import SceneError
-        from tampcli.geometry.scene import load_modes, read_scene  # numpy, tomllib
+        from tampcli.geometry.scene import read_scene  # numpy, tomllib
+        from tampcli.optimize.modes import load_modes
     with timers.stage("scene"):
         if modes_file is None:
             raise SceneError("the problem has a scene but the domain has no modes.toml beside "

@@ -402,10 +402,11 @@ def test_loader_accepts_scene_and_modes(problem):
     from tampcli.geometry.collision import CollisionChecker
     from tampcli.geometry.startcheck import check_start_state
     from tampcli.geometry.world import World
+    from tampcli.optimize.modes import load_modes
 
     domain = parser.parse_domain_file(_domain_file(problem))
     prob = parser.parse_problem_file(problem)
-    modes = scene_module.load_modes(DOMAINS / problem.parent.name / "modes.toml", domain)
+    modes = load_modes(DOMAINS / problem.parent.name / "modes.toml", domain)
     loaded, source = scene_module.read_scene(_scene_file(problem), domain, prob, modes=modes)
     with World(loaded) as world:
         check_start_state(world, CollisionChecker(world), source)

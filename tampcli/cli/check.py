@@ -116,14 +116,13 @@ def scene_part(domain: ast.Domain, problem: ast.Problem, args) -> dict | None:
     """
     if not args.scene and not _scene_beside(args.problem):
         return None
-    try:
-        from tampcli.geometry import report
-    except ImportError:
-        return None
-    scene_summary = getattr(report, "scene_summary", None)
-    if scene_summary is None:
-        return None
-    return scene_summary(domain, problem, args.domain, args.problem, args.scene, args.modes)
+    from tampcli.geometry import report
+    from tampcli.geometry.locate import find_modes
+    from tampcli.optimize.modes import load_modes
+
+    modes_path = args.modes or find_modes(args.domain)
+    modes = load_modes(modes_path, domain) if modes_path else None
+    return report.scene_summary(domain, problem, args.problem, args.scene, modes)
 
 
 def _scene_beside(problem_path: str) -> bool:

@@ -55,6 +55,7 @@ def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path
     from tampcli.geometry import scene as scene_mod
     from tampcli.geometry.world import World
     from tampcli.optimize import verify
+    from tampcli.optimize.modes import load_modes
     from tampcli.optimize.problem import lower
     from tampcli.search.plan_text import parse_step
 
@@ -68,7 +69,7 @@ def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path
         raise SolutionFileError(f"scene file not found: {scene_path}", path, key="scene")
     modes_path = solution_file.resolve_input(path, sol.modes) if sol.modes else \
         scene_mod.find_modes(Path(domain_path))
-    modes = scene_mod.load_modes(modes_path, domain) if modes_path else {}
+    modes = load_modes(modes_path, domain) if modes_path else {}
     scene = scene_mod.load_scene(scene_path, domain, problem_ast, geometric=False)
     with World(scene) as world:
         check_fits_world(checked, world, scene_path)

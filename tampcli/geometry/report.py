@@ -13,8 +13,7 @@ import math
 import numpy as np
 
 from tampcli.geometry.collision import CollisionChecker
-from tampcli.geometry.locate import find_modes, find_scene
-from tampcli.geometry.modes import load_modes
+from tampcli.geometry.locate import find_scene
 from tampcli.geometry.scene import read_scene
 from tampcli.geometry.startcheck import check_start_state
 from tampcli.geometry.world import World
@@ -24,17 +23,16 @@ PANDA_REACH = 0.855  # m, from the shoulder (joint 2) to the grasp target, arm s
 REPORT_DISTANCE = 0.05  # m: start-state pairs closer than this are listed
 
 
-def scene_summary(domain: ast.Domain, problem: ast.Problem, domain_path, problem_path,
-                  scene_path=None, modes_path=None) -> dict | None:
+def scene_summary(domain: ast.Domain, problem: ast.Problem, problem_path, scene_path=None,
+                  modes=None) -> dict | None:
     """A JSON-ready summary of the scene of `problem`, or None when it has none.
 
-    Raises SceneError (located) when the scene or modes file is bad.
+    `modes`: the domain's Modes (optimize.modes), loaded by the caller.
+    Raises SceneError (located) when the scene file is bad.
     """
     scene_path = scene_path or find_scene(problem_path)
     if scene_path is None:
         return None
-    modes_path = modes_path or find_modes(domain_path)
-    modes = load_modes(modes_path, domain) if modes_path else None
     scene, src = read_scene(scene_path, domain, problem, modes=modes)
     warnings: list[str] = []
     with World(scene) as world:
@@ -63,7 +61,7 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, domain_path, problem
                             "only (mode \"none\")")
     return {
         "scene": str(scene_path),
-        "modes": str(modes_path) if modes_path else None,
+        "modes": modes.path if modes is not None else None,
         "robot": robot,
         "support": support,
         "self_collision_pairs": self_pairs,

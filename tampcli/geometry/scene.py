@@ -26,7 +26,6 @@ from tampcli.geometry.model import (
     RobotSpec,
     Scene,
 )
-from tampcli.geometry.modes import Mode, Modes, load_modes
 from tampcli.geometry.scene_check import (
     check_against_problem,
     check_modes_against_scene,
@@ -38,8 +37,8 @@ from tampcli.pddl import ast
 
 __all__ = [
     "COLORS", "DEFAULT_COLOR", "PANDA_READY", "ROBOT_MODELS", "SHAPES", "Body", "Camera",
-    "Mode", "Modes", "Region", "RobotSpec", "Scene", "check_modes_against_scene", "find_modes",
-    "find_scene", "load_modes", "load_scene", "pddl_objects", "read_scene",
+    "Region", "RobotSpec", "Scene", "check_modes_against_scene", "find_modes",
+    "find_scene", "load_scene", "pddl_objects", "read_scene",
 ]
 
 

@@ -52,7 +52,7 @@ def check_modes_against_scene(src: TomlSource | None, scene: Scene, modes, domai
     objects = pddl_objects(domain, problem)
     parents = _type_parents(domain)
     for mode in modes.values():
-        if mode.kind == "none":
+        if not mode.geometric:
             continue
         action = domain.action(mode.action)
         for role in ("object", "on", "to"):

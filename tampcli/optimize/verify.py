@@ -237,6 +237,7 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
     from tampcli.errors import SolutionFileError
     from tampcli.geometry import scene as scene_mod
     from tampcli.geometry.world import World
+    from tampcli.optimize.modes import load_modes
     from tampcli.optimize.problem import lower
     from tampcli.optimize.result import TrajectoryResult
     from tampcli.pddl import ast, parser
@@ -267,7 +268,7 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
         problem_ast = parser.parse_problem_file(str(problem_path))
     modes_path = solution_mod.resolve_input(path, sol.modes) if sol.modes else \
         scene_mod.find_modes(domain_path)
-    modes = scene_mod.load_modes(modes_path, domain) if modes_path else {}
+    modes = load_modes(modes_path, domain) if modes_path else {}
     scene = scene_mod.load_scene(scene_path, domain, problem_ast, geometric=False)
     with World(scene) as world:
         if sol.robot.get("joints") and tuple(sol.robot["joints"]) != tuple(world.joint_names):

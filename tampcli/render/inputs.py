@@ -71,7 +71,7 @@ def _load_modes(anchor: Path, sol: Solution, domain):
     modes_path = solution_file.resolve_input(anchor, sol.modes)
     if modes_path is None or not modes_path.is_file() or domain is None:
         return None
-    from tampcli.geometry.scene import load_modes
+    from tampcli.optimize.modes import load_modes
 
     return load_modes(modes_path, domain)
 

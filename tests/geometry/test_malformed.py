@@ -13,7 +13,7 @@ from pathlib import Path
 import pytest
 
 from tampcli.errors import SceneError
-from tampcli.geometry.scene import load_modes
+from tampcli.optimize.modes import load_modes
 from tampcli.pddl import parser
 
 from .loading import load_checked

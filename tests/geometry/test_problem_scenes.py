@@ -5,7 +5,7 @@ from pathlib import Path
 import pytest
 
 from tampcli.geometry.locate import find_modes
-from tampcli.geometry.modes import load_modes
+from tampcli.optimize.modes import load_modes
 from tampcli.pddl import parser
 
 from .loading import load_checked

@@ -6,9 +6,16 @@ import pytest
 
 from tampcli.errors import SceneError
 from tampcli.geometry.report import scene_summary
+from tampcli.optimize.modes import load_modes
 from tampcli.pddl import parser
 
 DATA = Path(__file__).parent / "data"
+
+
+def _summary(domain, problem, dir_: Path):
+    modes = dir_ / "modes.toml"
+    return scene_summary(domain, problem, dir_ / "p01.pddl",
+                         modes=load_modes(modes, domain) if modes.is_file() else None)
 
 
 def _load(dir_: Path):
@@ -18,7 +25,7 @@ def _load(dir_: Path):
 
 def test_summary_of_the_test_scene():
     domain, problem = _load(DATA)
-    summary = scene_summary(domain, problem, DATA / "domain.pddl", DATA / "p01.pddl")
+    summary = _summary(domain, problem, DATA)
     json.dumps(summary)  # JSON-ready
     assert summary["robot"]["model"] == "panda" and len(summary["robot"]["joints"]) == 7
     assert summary["robot"]["tool_link"] == "panda_grasptarget"
@@ -36,7 +43,7 @@ def test_summary_of_the_test_scene():
 def test_no_scene_gives_none(tmp_path):
     domain, problem = _load(DATA)
     shutil.copy(DATA / "p01.pddl", tmp_path / "p01.pddl")
-    assert scene_summary(domain, problem, tmp_path / "domain.pddl", tmp_path / "p01.pddl") is None
+    assert _summary(domain, problem, tmp_path) is None
 
 
 def _copy_with(tmp_path, scene_text=None, modes_text=None) -> Path:
@@ -57,7 +64,7 @@ def test_warns_about_unreachable_goal_region_and_unmoded_action(tmp_path):
     modes = (DATA / "modes.toml").read_text().replace('[wait]\nmode = "none"\n', "")
     d = _copy_with(tmp_path, text, modes)
     domain, problem = _load(d)
-    summary = scene_summary(domain, problem, d / "domain.pddl", d / "p01.pddl")
+    summary = _summary(domain, problem, d)
     assert any("goal region 'goal'" in w and "beyond its reach" in w for w in summary["warnings"])
     assert any("'wait' has no table" in w for w in summary["warnings"])
 
@@ -69,6 +76,6 @@ def test_refuses_a_start_in_collision(tmp_path):
     d = _copy_with(tmp_path, text)
     domain, problem = _load(d)
     with pytest.raises(SceneError) as info:
-        scene_summary(domain, problem, d / "domain.pddl", d / "p01.pddl")
+        _summary(domain, problem, d)
     assert info.value.key == "robot.start" and "in collision" in info.value.message
     assert info.value.line == 5

@@ -4,7 +4,8 @@ import numpy as np
 import pytest
 
 from tampcli.errors import SceneError
-from tampcli.geometry.scene import find_modes, find_scene, load_modes, load_scene
+from tampcli.geometry.scene import find_modes, find_scene, load_scene
+from tampcli.optimize.modes import load_modes
 from tampcli.pddl import parser
 
 from .loading import load_checked

@@ -5,8 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from tampcli.geometry.modes import load_modes as _load_modes
 from tampcli.geometry.scene import load_scene as _load_scene
+from tampcli.optimize.modes import load_modes as _load_modes
 from tampcli.pddl import parser
 
 ROOT = Path(__file__).resolve().parents[2]

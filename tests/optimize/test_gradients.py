@@ -152,9 +152,9 @@ def test_collision_rows_at_active_contacts(wall):
 
 def test_keyframe_rows_stacking_on_a_moved_cube():
     """on_top_of a support the skeleton moved, and rows that depend on two keyframes."""
-    from tampcli.geometry.modes import load_modes
     from tampcli.geometry.scene import load_scene
     from tampcli.geometry.world import World
+    from tampcli.optimize.modes import load_modes
     from tampcli.pddl import parser
 
     from .helpers import ROOT
@@ -187,7 +187,7 @@ def test_keyframe_rows_stacking_on_a_moved_cube():
 
 def test_keyframe_rows_panda_push(wall):
     """The arm's push grip: a yaw-offset parameter and the object kept on its support."""
-    from tampcli.geometry.modes import Mode
+    from tampcli.optimize.modes import Mode
 
     scene, _, world = wall
     modes = {"push": Mode("push", "push", "?b", to="?to", params=("?b", "?from", "?to"))}

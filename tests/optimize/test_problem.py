@@ -58,7 +58,7 @@ def test_pick_place_phases_and_keyframes(wall):
 
 def test_symbolic_action_is_an_instant_phase(planar):
     scene, _, world = planar
-    from tampcli.geometry.modes import Mode
+    from tampcli.optimize.modes import Mode
 
     modes = {"pick": Mode("pick", "grasp", "?o", params=("?o", "?from")),
              "wait": Mode("wait", "none")}
@@ -86,7 +86,7 @@ def test_skeleton_errors_are_proved_infeasible_not_raised(wall, plan, words):
 
 
 def test_a_skeleton_of_symbolic_actions_only(planar):
-    from tampcli.geometry.modes import Mode
+    from tampcli.optimize.modes import Mode
 
     scene, _, world = planar
     p = lower(ops("(wait)", "(wait)"), scene, {"wait": Mode("wait", "none")}, world)

@@ -107,7 +107,7 @@ def test_object_larger_than_region_is_proved_infeasible(planar):
 
 
 def test_move_ends_with_the_tool_in_the_region(planar):
-    from tampcli.geometry.modes import Mode
+    from tampcli.optimize.modes import Mode
 
     scene, _, world = planar
     modes = {"goto": Mode("goto", "move", to="?r", params=("?r",))}
