@@ -1,4 +1,4 @@
-; A cylinder into a diagonal slot that only the hand, turned 45 degrees, fits into.
+; A cylinder into a slot that only the hand, turned across it, fits into.
 (define (problem robust-arm-p04)
   (:domain robust-arm)
   (:objects a - block

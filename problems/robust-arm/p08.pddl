@@ -1,4 +1,4 @@
-; A block out of a cubby on a ledge into a tray on the table, turned.
+; A block from under a roof on a ledge into a tray on the table, turned.
 (define (problem robust-arm-p08)
   (:domain robust-arm)
   (:objects a - block
