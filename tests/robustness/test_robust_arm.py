@@ -22,6 +22,7 @@ CLASSES = {
     "p11": "stacking contact", "p12": "stacking contact",
 }
 TIME_LIMIT = 120
+SKELETONS = 1000  # so that the time limit, not the default 20 skeletons, ends a search
 
 
 def test_every_problem_has_a_class():
@@ -47,7 +48,8 @@ def test_solve(cli, name, tmp_path):
     problem = PROBLEMS / f"{name}.pddl"
     out = tmp_path / "solution.json"
     start = time.monotonic()
-    run = cli("solve", DOMAIN, problem, "--time-limit", TIME_LIMIT, "--out", out)
+    run = cli("solve", DOMAIN, problem, "--time-limit", TIME_LIMIT, "-k", SKELETONS,
+              "--out", out)
     seconds = time.monotonic() - start
     solved = run.code == 0
     valid = violations = None
