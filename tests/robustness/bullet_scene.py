@@ -1,0 +1,256 @@
+"""The checker's own PyBullet scene, built from scene.toml (see checker.py).
+
+Shares no code with tampcli: poses, shapes and the Panda are read and built
+here, from the file format's meanings.
+"""
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+import pybullet as pb
+import pybullet_data
+import tomllib
+
+TOL_PEN, TOL_REST = 1e-3, 5e-3
+GRIP_LINKS = ("panda_hand", "panda_leftfinger", "panda_rightfinger")
+FINGERS = ("panda_finger_joint1", "panda_finger_joint2")
+
+
+def pose_of(v) -> tuple[list[float], list[float]]:
+    v = [float(x) for x in v]
+    if len(v) == 3:
+        return v, [0.0, 0.0, 0.0, 1.0]
+    if len(v) == 4:
+        return v[:3], list(pb.getQuaternionFromEuler([0.0, 0.0, v[3]]))
+    return v[:3], list(pb.getQuaternionFromEuler(v[3:6]))
+
+
+def matrix(pos, quat) -> np.ndarray:
+    m = np.eye(4)
+    m[:3, :3] = np.array(pb.getMatrixFromQuaternion(quat)).reshape(3, 3)
+    m[:3, 3] = pos
+    return m
+
+
+def pose_error(a: np.ndarray, b: np.ndarray) -> tuple[float, float]:
+    d = float(np.linalg.norm(a[:3, 3] - b[:3, 3]))
+    c = (np.trace(a[:3, :3].T @ b[:3, :3]) - 1.0) / 2.0
+    return d, math.acos(max(-1.0, min(1.0, c)))
+
+
+class Replay:
+    """One PyBullet scene built from scene.toml; owns its client."""
+
+    def __init__(self, scene_path: Path):
+        self.scene = tomllib.loads(scene_path.read_text())
+        self.c = pb.connect(pb.DIRECT)
+        self.bodies: dict[str, int] = {}
+        self.info: dict[str, dict] = {}
+        for obj in self.scene.get("objects", []):
+            self.bodies[obj["name"]] = self._body(obj, scene_path.parent)
+            self.info[obj["name"]] = obj
+        self.regions = {r["name"]: r for r in self.scene.get("regions", [])}
+        self._robot(self.scene["robot"], scene_path.parent)
+
+    def close(self) -> None:
+        pb.disconnect(self.c)
+
+    def _body(self, obj: dict, folder: Path) -> int:
+        pos, quat = pose_of(obj["pose"])
+        shape, size = obj["shape"], obj.get("size", [])
+        if shape == "urdf":
+            return pb.loadURDF(str(folder / obj["urdf"]), pos, quat, useFixedBase=True,
+                               physicsClientId=self.c)
+        kw = {"box": dict(shapeType=pb.GEOM_BOX, halfExtents=[s / 2 for s in size]),
+              "cylinder": dict(shapeType=pb.GEOM_CYLINDER, radius=size[0], height=size[1]),
+              "sphere": dict(shapeType=pb.GEOM_SPHERE, radius=size[0]),
+              "mesh": dict(shapeType=pb.GEOM_MESH, fileName=str(folder / obj.get("mesh", "")),
+                           meshScale=obj.get("scale", [1.0, 1.0, 1.0]))}[shape]
+        col = pb.createCollisionShape(physicsClientId=self.c, **kw)
+        return pb.createMultiBody(0.0, col, -1, pos, quat, physicsClientId=self.c)
+
+    def _robot(self, robot: dict, folder: Path) -> None:
+        pos, quat = pose_of(robot.get("base", [0.0, 0.0, 0.0]))
+        self.model = robot.get("model", "panda")
+        self.base_z = pos[2]
+        if self.model == "planar":
+            r, h = robot.get("radius", 0.05), robot.get("height", 0.05)
+            col = pb.createCollisionShape(pb.GEOM_CYLINDER, radius=r, height=h,
+                                          physicsClientId=self.c)
+            self.robot = pb.createMultiBody(0.0, col, -1, pos, physicsClientId=self.c)
+            self.links, self.joint_index, self.limits = {-1: "planar"}, {}, {}
+            return
+        urdf = (str(folder / robot["urdf"]) if "urdf" in robot else
+                os.path.join(pybullet_data.getDataPath(), "franka_panda/panda.urdf"))
+        self.robot = pb.loadURDF(urdf, pos, quat, useFixedBase=True, physicsClientId=self.c)
+        self.links = {-1: "base"}
+        self.joint_index, self.limits, parent = {}, {}, {}
+        for j in range(pb.getNumJoints(self.robot, physicsClientId=self.c)):
+            info = pb.getJointInfo(self.robot, j, physicsClientId=self.c)
+            self.links[j] = info[12].decode()
+            parent[j] = info[16]
+            if info[2] != pb.JOINT_FIXED:
+                self.joint_index[info[1].decode()] = j
+                self.limits[info[1].decode()] = (info[8], info[9])
+        self._self_pairs(parent)
+
+    def _self_pairs(self, parent: dict[int, int]) -> None:
+        geo = [k for k in self.links if pb.getCollisionShapeData(self.robot, k,
+                                                                 physicsClientId=self.c)]
+
+        def up(k: int) -> int:  # nearest ancestor with geometry
+            k = parent.get(k, -1)
+            while k not in geo and k != -1:
+                k = parent.get(k, -1)
+            return k
+
+        fingers = {self.joint_index.get(f) for f in FINGERS}
+        self.self_pairs = [(a, b) for i, a in enumerate(geo) for b in geo[i + 1:]
+                           if up(a) != b and up(b) != a and {a, b} != fingers]
+
+    # -- state --------------------------------------------------------------
+    def set_q(self, names: list[str], q, fingers: float | None) -> None:
+        if self.model == "planar":
+            pb.resetBasePositionAndOrientation(self.robot, [q[0], q[1], self.base_z],
+                                               [0, 0, 0, 1], physicsClientId=self.c)
+            return
+        for n, v in zip(names, q, strict=True):
+            pb.resetJointState(self.robot, self.joint_index[n], v, physicsClientId=self.c)
+        if fingers is not None:
+            for f in FINGERS:
+                if f in self.joint_index:
+                    pb.resetJointState(self.robot, self.joint_index[f], fingers,
+                                       physicsClientId=self.c)
+
+    def hand(self) -> np.ndarray:
+        if self.model == "planar":
+            return matrix(*pb.getBasePositionAndOrientation(self.robot, physicsClientId=self.c))
+        k = next((j for j, n in self.links.items() if n == "panda_hand"), max(self.links))
+        s = pb.getLinkState(self.robot, k, computeForwardKinematics=True, physicsClientId=self.c)
+        return matrix(s[4], s[5])
+
+    def place(self, name: str, m: np.ndarray) -> None:
+        q = quaternion(m[:3, :3])
+        pb.resetBasePositionAndOrientation(self.bodies[name], m[:3, 3].tolist(), q,
+                                           physicsClientId=self.c)
+
+    def close_fingers(self, held: str) -> None:
+        """Close both fingers until they touch `held` (PyBullet distances)."""
+        d = 0.04
+        for _ in range(3):
+            self.set_fingers(d)
+            gaps = [self._dist(self.robot, self.bodies[held], self.joint_index[f], 0.05)
+                    for f in FINGERS]
+            d = max(0.0, min(0.04, d - max(0.0, min(gaps))))
+        self.set_fingers(d)
+
+    def set_fingers(self, d: float) -> None:
+        for f in FINGERS:
+            pb.resetJointState(self.robot, self.joint_index[f], d, physicsClientId=self.c)
+
+    def _dist(self, a: int, b: int, link: int, reach: float) -> float:
+        pts = pb.getClosestPoints(a, b, reach, linkIndexA=link, physicsClientId=self.c)
+        return min((p[8] for p in pts), default=reach)
+
+    # -- queries ------------------------------------------------------------
+    def penetrations(self, held: str | None, grasped: bool, movable: list[str],
+                     everything: bool):
+        """(name A, name B, depth) for each pair deeper than the tolerance; `grasped`:
+        the fingers hold `held`, so they and the hand may touch it."""
+        out = []
+        stand = self.stands_on()
+        for name, body in self.bodies.items():
+            for p in pb.getClosestPoints(self.robot, body, 0.0, physicsClientId=self.c):
+                link = self.links.get(p[3], "?")
+                if p[8] >= -TOL_PEN or (grasped and name == held and link in GRIP_LINKS):
+                    continue
+                if p[3] == -1 and name == stand:
+                    continue
+                out.append((link, name, p[8]))
+        names = list(self.bodies)
+        for i, a in enumerate(names):
+            for b in names[i + 1:]:
+                if not (everything and (a in movable or b in movable)) and held not in (a, b):
+                    continue
+                for p in pb.getClosestPoints(self.bodies[a], self.bodies[b], 0.0,
+                                             physicsClientId=self.c):
+                    if p[8] < -TOL_PEN:
+                        out.append((a, b, p[8]))
+        if self.model != "planar":
+            for a, b in self.self_pairs:
+                for p in pb.getClosestPoints(self.robot, self.robot, 0.0, a, b,
+                                             physicsClientId=self.c):
+                    if p[8] < -TOL_PEN:
+                        out.append((self.links[a], self.links[b], p[8]))
+        return out
+
+    def stands_on(self) -> str | None:
+        base = pb.getBasePositionAndOrientation(self.robot, physicsClientId=self.c)[0]
+        for name, body in self.bodies.items():
+            lo, hi = pb.getAABB(body, physicsClientId=self.c)
+            if (lo[0] <= base[0] <= hi[0] and lo[1] <= base[1] <= hi[1]
+                    and abs(hi[2] - self.base_z) <= TOL_REST):
+                return name
+        return None
+
+    def corners(self, name: str) -> np.ndarray:
+        """World points whose convex hull is the body (boxes exactly, round bodies to
+        72 points a ring, other shapes their bounding box)."""
+        obj, body = self.info[name], self.bodies[name]
+        m = matrix(*pb.getBasePositionAndOrientation(body, physicsClientId=self.c))
+        size = obj.get("size", [])
+        if obj["shape"] == "box":
+            pts = np.array([[x, y, z] for x in (-1, 1) for y in (-1, 1)
+                            for z in (-1, 1)]) * np.array(size) / 2
+        elif obj["shape"] in ("cylinder", "sphere"):
+            r, h = size[0], (size[1] if obj["shape"] == "cylinder" else 2 * size[0])
+            t = np.linspace(0, 2 * np.pi, 72, endpoint=False)
+            ring = np.stack([r * np.cos(t), r * np.sin(t)], 1)
+            pts = np.concatenate([np.c_[ring, np.full(72, z)] for z in (-h / 2, h / 2)])
+        else:
+            lo, hi = pb.getAABB(body, physicsClientId=self.c)
+            return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                             for z in (lo[2], hi[2])])
+        return pts @ m[:3, :3].T + m[:3, 3]
+
+    def footprint(self, name: str) -> tuple[np.ndarray, float]:
+        """xy points whose hull is the body's projection, and its bottom z."""
+        pts = self.corners(name)
+        return pts[:, :2], float(pts[:, 2].min())
+
+    def top_face(self, name: str) -> tuple[np.ndarray, np.ndarray, float]:
+        """Frame (4x4, xy used) and half extents of a body's top face, and its height."""
+        obj, pts = self.info[name], self.corners(name)
+        m = matrix(*pb.getBasePositionAndOrientation(self.bodies[name], physicsClientId=self.c))
+        if obj["shape"] == "box":
+            return m, np.array(obj["size"][:2]) / 2, float(pts[:, 2].max())
+        if obj["shape"] == "cylinder":  # its inscribed square: conservative
+            return m, np.full(2, obj["size"][0] / math.sqrt(2)), float(pts[:, 2].max())
+        lo, hi = pts.min(0), pts.max(0)
+        centre = np.eye(4)
+        centre[:2, 3] = (lo[:2] + hi[:2]) / 2
+        return centre, (hi[:2] - lo[:2]) / 2, float(hi[2])
+
+    def rests(self, name: str) -> bool:
+        """The body's bottom lies on the top face of a body under its centre."""
+        pts, bottom = self.footprint(name)
+        cx, cy = pts.mean(0)
+        for other in self.bodies:
+            if other == name:
+                continue
+            frame, half, top = self.top_face(other)
+            local = (np.array([cx, cy]) - frame[:2, 3]) @ frame[:2, :2]
+            if np.all(np.abs(local) <= half + 1e-6) and abs(top - bottom) <= TOL_REST:
+                return True
+        return False
+
+
+def quaternion(r: np.ndarray) -> list[float]:
+    w = math.sqrt(max(0.0, 1.0 + r[0, 0] + r[1, 1] + r[2, 2])) / 2
+    x = math.copysign(math.sqrt(max(0.0, 1 + r[0, 0] - r[1, 1] - r[2, 2])) / 2, r[2, 1] - r[1, 2])
+    y = math.copysign(math.sqrt(max(0.0, 1 - r[0, 0] + r[1, 1] - r[2, 2])) / 2, r[0, 2] - r[2, 0])
+    z = math.copysign(math.sqrt(max(0.0, 1 - r[0, 0] - r[1, 1] + r[2, 2])) / 2, r[1, 0] - r[0, 1])
+    return [x, y, z, w]

@@ -1,0 +1,267 @@
+"""An independent checker of tampcli solutions, for tests only.
+
+It shares no code with tampcli: it reads scene.toml (tomllib), the problem's
+goal (a small s-expression reader) and solution.json (json) itself, builds its
+own PyBullet DIRECT scene and asks PyBullet's getClosestPoints. It opens its
+own client, which the product's rule "PyBullet only inside World" does not
+cover: the point is a second opinion that does not trust World.
+
+Replay. The trajectory is replayed at 10x the waypoint resolution (linear
+interpolation between consecutive waypoints). Movable objects stand at the
+pose solution.json gives at the start of each phase; the object a phase says
+is `attached` moves with the hand, at the pose relative to the hand it had
+when it became attached. Panda fingers: the given values when the finger
+joints are among the solution's joints; otherwise fully open (0.04), and
+while an object is attached, closed until they touch it.
+
+Rules (a penetration is a signed distance below -1 mm):
+
+1. collision -- at every sample: robot links against every body; the held
+   object against every other body; movable objects against everything at
+   every phase boundary; robot self-collision between non-adjacent links.
+   Not collisions: a grasped object (it became attached at an instantaneous
+   action) against the Panda's hand and fingers, which close on it; the
+   robot's base link against the body it stands on (resting contact);
+   adjacent links (parent and child, a link without geometry on a fixed
+   joint merged into its parent) and the two fingers (they close on each
+   other with nothing between them). A pushed object and the planar robot's
+   suction grasp are contacts on a side face: touching, so checked like any
+   pair (a push's pose is set by an action that spans a motion). Resting
+   contact is distance about 0, which the 1 mm tolerance admits; a body
+   sunk deeper into its support is a collision.
+2. attachment -- at each boundary of a phase with an attached object, the
+   pose solution.json gives equals hand pose x relative pose (1 mm, 1 deg);
+   an object not attached does not move across a phase (same tolerances).
+   A pushed object keeps its height and stays upright (1 mm, 1 deg).
+3. support -- at each boundary, every object not held rests on the top face
+   of some body (its bottom within 5 mm of that face, its centre over it).
+4. goal -- every goal atom (pred x y) with x a movable object and y a region:
+   x's whole footprint (its projection on the region's support) lies inside
+   the region's rectangle (1 mm tolerance) and its bottom is within 5 mm of
+   the support's top face; with y a body: the same against y's top face.
+   `and` needs every part, `or` any one; other goal atoms are symbolic.
+5. limits -- every waypoint within the URDF joint limits.
+
+    python -m tests.robustness.checker SOLUTION.json [--scene S] [--problem P]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import tomllib
+
+from tests.robustness.bullet_scene import FINGERS, Replay, matrix, pose_error
+
+TOL_POS, TOL_ANG, TOL_REST, SUB = 1e-3, math.radians(1.0), 5e-3, 10
+
+
+@dataclass(frozen=True)
+class Violation:
+    kind: str      # collision | attachment | support | goal | limits | input
+    where: str
+    message: str
+
+    def __str__(self) -> str:
+        return f"{self.kind}: {self.where}: {self.message}"
+
+
+def _resolve(name: str, beside: Path) -> Path:
+    for cand in (beside.parent / name, Path(name)):
+        if cand.exists():
+            return cand
+    raise FileNotFoundError(name)
+
+
+def _sexp(text: str):
+    text = "\n".join(line.split(";", 1)[0] for line in text.lower().splitlines())
+    stack: list[list] = [[]]
+    for tok in text.replace("(", " ( ").replace(")", " ) ").split():
+        if tok == "(":
+            stack.append([])
+        elif tok == ")":
+            done = stack.pop()
+            stack[-1].append(done)
+        else:
+            stack[-1].append(tok)
+    return stack[0][0]
+
+
+def read_goal(problem: Path):
+    for part in _sexp(problem.read_text()):
+        if isinstance(part, list) and part and part[0] == ":goal":
+            return part[1]
+    return ["and"]
+
+
+def _samples(traj: np.ndarray, s: int, e: int):
+    """(fractional waypoint index, configuration) at SUB samples per segment."""
+    yield float(s), traj[s]
+    for i in range(s, e):
+        for j in range(1, SUB + 1):
+            t = j / SUB
+            yield i + t, (1 - t) * traj[i] + t * traj[i + 1]
+
+
+def _limits(rp: Replay, names: list[str], traj: np.ndarray) -> list[Violation]:
+    out = []
+    for c, n in enumerate(names):
+        if n in rp.limits:
+            lo, hi = rp.limits[n]
+            bad = np.flatnonzero((traj[:, c] < lo - 1e-6) | (traj[:, c] > hi + 1e-6))
+            if bad.size:
+                out.append(Violation("limits", f"waypoint {bad[0]}",
+                                     f"{n} = {traj[bad[0], c]:.4f} outside [{lo}, {hi}]"))
+    return out
+
+
+def _goal(rp: Replay, goal, movable: list[str]) -> list[str]:
+    """Messages for the goal atoms that do not hold geometrically."""
+    if not goal or not isinstance(goal[0], str):
+        return []
+    if goal[0] == "and":
+        return [m for part in goal[1:] for m in _goal(rp, part, movable)]
+    if goal[0] == "or":
+        parts = [_goal(rp, part, movable) for part in goal[1:]]
+        return [] if any(not p for p in parts) else ["no part of (or ...) holds: " + parts[0][0]]
+    if len(goal) != 3 or goal[1] not in movable or not all(isinstance(g, str) for g in goal):
+        return []
+    x, y = goal[1], goal[2]
+    pts, bottom = rp.footprint(x)
+    if y in rp.regions:
+        reg = rp.regions[y]
+        frame, half, top = rp.top_face(reg["on"])
+        frame = np.eye(4)
+        frame[:2, 3] = reg["center"]
+        half = np.array(reg["size"]) / 2
+    elif y in rp.bodies:
+        frame, half, top = rp.top_face(y)
+    else:
+        return []
+    local = (pts - frame[:2, 3]) @ frame[:2, :2]
+    over = float(np.max(np.abs(local) - half))
+    msgs = []
+    if over > TOL_POS:
+        msgs.append(f"({' '.join(goal)}): {x}'s footprint sticks out of {y} by {over * 1000:.1f} mm")
+    if abs(bottom - top) > TOL_REST:
+        msgs.append(f"({' '.join(goal)}): {x}'s bottom z = {bottom:.4f}, "
+                    f"not on {y}'s support top z = {top:.4f}")
+    return msgs
+
+
+def check_replay(rp: Replay, sol: dict, goal) -> list[Violation]:
+    names = sol["robot"]["joints"]
+    traj = np.array(sol["trajectory"], dtype=float)
+    phases = sol["phases"]
+    poses = {n: [matrix(p[:3], p[3:]) for p in v] for n, v in sol["objects"].items()}
+    movable = list(poses)
+    own_fingers = any(f in names for f in FINGERS)
+    out = _limits(rp, names, traj)
+    worst: dict[tuple, tuple[float, Violation]] = {}
+    held, rel, grasped = None, np.eye(4), False
+    for k, ph in enumerate(phases):
+        where = f"phase {k} ({ph['action'] or 'motion'})"
+        att, s, e = ph["attached"], ph["start"], ph["end"]
+        for n in movable:
+            rp.place(n, poses[n][k])
+        pushing = att is not None and ph["action"] is not None and e > s
+        if att and att != held:
+            rp.set_q(names, traj[s], None if own_fingers else 0.04)
+            rel = np.linalg.inv(rp.hand()) @ poses[att][k]
+            grasped = not pushing and rp.model != "planar"
+        held = att
+        for t, q in _samples(traj, s, e):
+            rp.set_q(names, q, None if own_fingers else 0.04)
+            if att:
+                m = rp.hand() @ rel
+                rp.place(att, m)
+                if grasped and not own_fingers:
+                    rp.close_fingers(att)
+                if pushing:
+                    dz, tilt = pose_error(_upright(m), _upright(poses[att][k]))
+                    if dz > TOL_POS or tilt > TOL_ANG:
+                        out.append(Violation("attachment", where, f"pushed {att} lifts or tips "
+                                             f"at waypoint {t:.1f} ({dz * 1000:.1f} mm, "
+                                             f"{math.degrees(tilt):.1f} deg)"))
+                        pushing = False
+            for a, b, d in rp.penetrations(att, grasped, movable, t in (s, e)):
+                key = (k, a, b)
+                if key not in worst or d < worst[key][0]:
+                    worst[key] = (d, Violation("collision", where, f"{a} and {b} penetrate by "
+                                               f"{-d * 1000:.1f} mm at waypoint {t:.1f}"))
+        for n in movable:
+            if n == att:
+                rp.set_q(names, traj[e], None)
+                dp, da = pose_error(rp.hand() @ rel, poses[n][k + 1])
+                what = f"{n} is not where the hand holds it at waypoint {e}"
+            else:
+                dp, da = pose_error(poses[n][k], poses[n][k + 1])
+                what = f"{n} moves while not held"
+            if dp > TOL_POS or da > TOL_ANG:
+                out.append(Violation("attachment", where, f"{what}: off by {dp * 1000:.1f} mm, "
+                                     f"{math.degrees(da):.1f} deg"))
+        nxt = phases[k + 1]["attached"] if k + 1 < len(phases) else None
+        for n in movable:
+            rp.place(n, poses[n][k + 1])
+        for n in movable:
+            if n not in (att, nxt) and not rp.rests(n):
+                out.append(Violation("support", where, f"{n} rests on nothing after this phase"))
+    out += [v for _, v in sorted(worst.values(), key=lambda dv: dv[0])]
+    for n in movable:
+        rp.place(n, poses[n][-1])
+    out += [Violation("goal", "end", m) for m in _goal(rp, goal, movable)]
+    return out
+
+
+def _upright(m: np.ndarray) -> np.ndarray:
+    """Height and tilt of a pose, without its x, y and yaw."""
+    z = m[:3, 2]
+    axis = np.cross([0.0, 0.0, 1.0], z)
+    s, c = np.linalg.norm(axis), z[2]
+    r = np.eye(3)
+    if s > 1e-12:
+        k = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]]) / s
+        r = np.eye(3) + s * k + (1 - c) * k @ k
+    u = np.eye(4)
+    u[:3, :3] = r
+    u[2, 3] = m[2, 3]
+    return u
+
+
+def check_solution(solution: Path, scene: Path | None = None,
+                   problem: Path | None = None) -> list[Violation]:
+    """Every violation of the rules above; an empty list is a valid solution."""
+    sol = json.loads(Path(solution).read_text())
+    scene = Path(scene) if scene else _resolve(sol["scene"], Path(solution))
+    problem = Path(problem) if problem else _resolve(sol["problem"], Path(solution))
+    replay = Replay(scene)
+    try:
+        return check_replay(replay, sol, read_goal(problem))
+    finally:
+        replay.close()
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(prog="checker", description=__doc__.splitlines()[0])
+    ap.add_argument("solution", type=Path)
+    ap.add_argument("--scene", type=Path)
+    ap.add_argument("--problem", type=Path)
+    a = ap.parse_args(argv)
+    try:
+        found = check_solution(a.solution, a.scene, a.problem)
+    except (OSError, KeyError, ValueError, tomllib.TOMLDecodeError) as e:
+        print(f"{a.solution}: cannot check: {type(e).__name__}: {e}", file=sys.stderr)
+        return 2
+    for v in found:
+        print(v)
+    print("valid" if not found else f"{len(found)} violation(s)")
+    return 0 if not found else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

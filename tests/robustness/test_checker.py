@@ -1,0 +1,149 @@
+"""The independent checker on solutions `tampcli solve` writes for two library
+problems, and on the same solutions broken on purpose."""
+import copy
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from tests.robustness.bullet_scene import Replay
+from tests.robustness.checker import check_replay, check_solution, main, read_goal
+
+ROOT = Path(__file__).resolve().parents[2]
+LIBRARY = {"arm": ("arm-pick-place", "p01"), "planar": ("planar-tamp", "p01")}
+
+
+@pytest.fixture(scope="session")
+def solved(tmp_path_factory):
+    """name -> (solution dict, scene path, problem path), solved once a session."""
+    out = {}
+    folder = tmp_path_factory.mktemp("library")
+    for name, (domain, prob) in LIBRARY.items():
+        path = folder / f"{name}.json"
+        problem = ROOT / "problems" / domain / f"{prob}.pddl"
+        run = subprocess.run([sys.executable, "-m", "tampcli", "solve",
+                              ROOT / "domains" / domain / "domain.pddl", problem,
+                              "--out", path, "--time-limit", "60"],
+                             cwd=ROOT, capture_output=True, text=True,
+                             env={**os.environ, "OPENBLAS_NUM_THREADS": "1"})
+        assert run.returncode == 0, run.stdout + run.stderr
+        out[name] = (json.loads(path.read_text()), problem.with_suffix(".scene.toml"), problem)
+    return out
+
+
+def violations(solved, name, edit=None):
+    sol, scene, problem = solved[name]
+    sol = copy.deepcopy(sol)
+    if edit:
+        edit(sol)
+    replay = Replay(scene)
+    try:
+        return check_replay(replay, sol, read_goal(problem))
+    finally:
+        replay.close()
+
+
+def test_arm_solution_is_valid(solved):
+    assert violations(solved, "arm") == []
+
+
+def test_planar_solution_breaks_only_the_suction_contact(solved):
+    """tampcli's planar grasps may sink the disk into the block it grasps (8 mm in
+    planar-tamp p01): every other rule holds."""
+    found = violations(solved, "planar")
+    held = {p["attached"] for p in solved["planar"][0]["phases"]} - {None}
+    others = [v for v in found if not (v.kind == "collision" and "planar and " in v.message
+                                       and v.message.split(" and ")[1].split()[0] in held)]
+    assert others == []
+
+
+@pytest.mark.xfail(strict=True, reason="tampcli's suction grasp sinks the planar disk "
+                   "about 8 mm into block a of planar-tamp p01 (a touch is 1 mm at most)")
+def test_planar_solution_is_valid(solved):
+    assert violations(solved, "planar") == []
+
+
+def test_arm_waypoint_through_the_table_is_a_collision(solved):
+    def sink(sol):  # the fingers 1-2 cm below the table top, half way to the cube
+        sol["trajectory"][5] = [0.0, 1.3, 0.0, -0.9, 0.0, 2.2, 0.785]
+
+    found = [v for v in violations(solved, "arm", sink) if v.kind == "collision"]
+    assert found and all(v.where == "phase 0 (motion)" for v in found)
+    assert any("finger and table" in v.message and "waypoint 5.0" in v.message for v in found)
+
+
+def test_planar_waypoint_through_a_block_is_a_collision(solved):
+    def through_b(sol):  # before b is picked, the disk crosses b's centre
+        b = sol["objects"]["b"][0]
+        sol["trajectory"][5] = [b[0], b[1]]
+
+    found = [v for v in violations(solved, "planar", through_b) if v.kind == "collision"]
+    assert any(v.where == "phase 0 (motion)" and "planar and b penetrate" in v.message
+               for v in found)
+
+
+@pytest.mark.parametrize("name, obj", [("arm", "a"), ("planar", "b")])
+def test_final_pose_outside_the_region_fails_containment(solved, name, obj):
+    def slide(sol):  # 10 cm along y: outside every goal region of both problems
+        sol["objects"][obj][-1][1] += 0.10
+
+    found = violations(solved, name, slide)
+    goal = [v for v in found if v.kind == "goal"]
+    assert len(goal) == 1 and f"{obj}'s footprint sticks out of goal" in goal[0].message
+    assert any(v.kind == "attachment" and f"{obj} moves while not held" in v.message
+               for v in found)
+
+
+def test_floating_final_pose_fails_resting(solved):
+    def lift(sol):
+        sol["objects"]["a"][-1][2] += 0.02
+
+    found = violations(solved, "arm", lift)
+    assert any(v.kind == "support" and "a rests on nothing" in v.message for v in found)
+    assert any(v.kind == "goal" and "bottom z" in v.message for v in found)
+
+
+def test_held_object_off_the_hand_fails_attachment(solved):
+    def shift(sol):  # the pose after the carry, 5 mm off the hand
+        carry = next(k for k, p in enumerate(sol["phases"])
+                     if p["action"] is None and p["attached"] == "a")
+        sol["objects"]["a"][carry + 1][0] += 0.005
+
+    found = violations(solved, "arm", shift)
+    assert any(v.kind == "attachment" and "not where the hand holds it" in v.message
+               and "5.0 mm" in v.message for v in found)
+
+
+def test_joint_limit(solved):
+    def bend(sol):
+        sol["trajectory"][3][3] = 0.2  # panda_joint4's upper limit is 0
+
+    found = violations(solved, "arm", bend)
+    assert any(v.kind == "limits" and "panda_joint4" in v.message for v in found)
+
+
+def test_command_line(solved, tmp_path, capsys):
+    sol, scene, problem = solved["arm"]
+    good = tmp_path / "good.json"
+    good.write_text(json.dumps(sol))
+    assert main([str(good), "--scene", str(scene), "--problem", str(problem)]) == 0
+    assert capsys.readouterr().out.strip() == "valid"
+    bad = copy.deepcopy(sol)
+    bad["objects"]["a"][-1][1] += 0.10
+    (tmp_path / "bad.json").write_text(json.dumps(bad))
+    assert main([str(tmp_path / "bad.json"), "--scene", str(scene),
+                 "--problem", str(problem)]) == 1
+    assert "goal: end:" in capsys.readouterr().out
+    assert main([str(tmp_path / "missing.json")]) == 2
+
+
+def test_paths_in_the_solution_are_found_from_the_working_directory(solved, tmp_path,
+                                                                    monkeypatch):
+    sol = solved["arm"][0]
+    path = tmp_path / "s.json"
+    path.write_text(json.dumps(sol))
+    monkeypatch.chdir(ROOT)
+    assert check_solution(path) == []
