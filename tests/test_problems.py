@@ -64,8 +64,15 @@ TOL = 1e-9
 PANDA_REACH = (0.3, 0.7)  # horizontal distance from the base of what the arm handles (m)
 
 
+# The robustness sets (problems/robust-*) were written blind, before tuning, to
+# the file formats alone: they keep their own promises (tests/robustness), not
+# this library's conventions (every body inside its support's footprint, axis-
+# aligned fits), and are indexed in their own READMEs.
+ROBUST = "robust-"
+
+
 def _problem_files() -> list[Path]:
-    return sorted(PROBLEMS.glob("*/p*.pddl"))
+    return sorted(p for p in PROBLEMS.glob("*/p*.pddl") if not p.parent.name.startswith(ROBUST))
 
 
 def _key(problem: Path) -> str:
@@ -94,7 +101,8 @@ GEO_IDS = [_key(p) for p in GEOMETRIC]
 
 
 def test_library_is_complete():
-    domains = sorted(d.name for d in DOMAINS.iterdir() if d.is_dir())
+    domains = sorted(d.name for d in DOMAINS.iterdir()
+                     if d.is_dir() and not d.name.startswith(ROBUST))
     assert {"planar-push", "planar-tamp", "arm-pick-place", "arm-kitchen", "arm-hanoi",
             "arm-sort", "gripper", "blocksworld"} <= set(domains)
     for name in domains:
@@ -164,10 +172,10 @@ def test_symbolic_batch_finds_every_domain(cli, tmp_path):
               "--out", out, PROBLEMS)
     assert run.code == 0, run.err
     rows = {_key(Path(r["problem"])): r for r in map(json.loads, out.read_text().splitlines())}
-    assert set(rows) == set(EXPECTED)
+    assert {key for key in rows if not key.startswith(ROBUST)} == set(EXPECTED)
     for key, row in rows.items():
         assert row["status"] == "solved", (key, row["error"])
-        assert row["cost"] >= EXPECTED[key][0], key
+        assert key.startswith(ROBUST) or row["cost"] >= EXPECTED[key][0], key
 
 
 @pytest.mark.parametrize("problem", ALL, ids=IDS)
