@@ -63,7 +63,7 @@ TOL_POS, TOL_ANG, TOL_REST, SUB = 1e-3, math.radians(1.0), 5e-3, 10
 
 @dataclass(frozen=True)
 class Violation:
-    kind: str      # collision | attachment | support | goal | limits | input
+    kind: str      # collision | attachment | support | goal | limits
     where: str
     message: str
 
