@@ -63,7 +63,7 @@ TOL_POS, TOL_ANG, TOL_REST, SUB = 1e-3, math.radians(1.0), 5e-3, 10
 
 @dataclass(frozen=True)
 class Violation:
-    kind: str      # collision | attachment | support | goal | limits | input
+    kind: str      # collision | attachment | support | goal | limits
     where: str
     message: str
 
@@ -120,14 +120,14 @@ def _limits(rp: Replay, names: list[str], traj: np.ndarray) -> list[Violation]:
     return out
 
 
-def _goal(rp: Replay, goal, movable: list[str]) -> list[str]:
+def goal_failures(rp: Replay, goal, movable: list[str]) -> list[str]:
     """Messages for the goal atoms that do not hold geometrically."""
     if not goal or not isinstance(goal[0], str):
         return []
     if goal[0] == "and":
-        return [m for part in goal[1:] for m in _goal(rp, part, movable)]
+        return [m for part in goal[1:] for m in goal_failures(rp, part, movable)]
     if goal[0] == "or":
-        parts = [_goal(rp, part, movable) for part in goal[1:]]
+        parts = [goal_failures(rp, part, movable) for part in goal[1:]]
         return [] if any(not p for p in parts) else ["no part of (or ...) holds: " + parts[0][0]]
     if len(goal) != 3 or goal[1] not in movable or not all(isinstance(g, str) for g in goal):
         return []
@@ -214,7 +214,7 @@ def check_replay(rp: Replay, sol: dict, goal) -> list[Violation]:
     out += [v for _, v in sorted(worst.values(), key=lambda dv: dv[0])]
     for n in movable:
         rp.place(n, poses[n][-1])
-    out += [Violation("goal", "end", m) for m in _goal(rp, goal, movable)]
+    out += [Violation("goal", "end", m) for m in goal_failures(rp, goal, movable)]
     return out
 
 

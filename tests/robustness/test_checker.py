@@ -2,15 +2,17 @@
 problems, and on the same solutions broken on purpose."""
 import copy
 import json
+import math
 import os
 import subprocess
 import sys
 from pathlib import Path
 
+import pybullet as pb
 import pytest
 
-from tests.robustness.bullet_scene import Replay
-from tests.robustness.checker import check_replay, check_solution, main, read_goal
+from tests.robustness.bullet_scene import Replay, matrix
+from tests.robustness.checker import check_replay, check_solution, goal_failures, main, read_goal
 
 ROOT = Path(__file__).resolve().parents[2]
 LIBRARY = {"arm": ("arm-pick-place", "p01"), "planar": ("planar-tamp", "p01")}
@@ -147,3 +149,24 @@ def test_paths_in_the_solution_are_found_from_the_working_directory(solved, tmp_
     path.write_text(json.dumps(sol))
     monkeypatch.chdir(ROOT)
     assert check_solution(path) == []
+
+
+@pytest.mark.parametrize("dx, yaw_deg, dz, holds", [
+    (0.0, 30.0, 0.0, True),       # square on the cube below
+    (0.0, 34.0, 0.0, True),       # 4 degrees off: the 2.5 mm margins still hold it
+    (0.002, 30.0, 0.0, True),     # 2 mm off centre
+    (0.0, 49.0, 0.0, False),      # 19 degrees off: the corners stick out
+    (0.004, 30.0, 0.0, False),    # 4 mm off centre: 1.5 mm out
+    (0.0, 30.0, 0.008, False),    # 8 mm above the top face: not resting on it
+])
+def test_stacked_footprint_lies_inside_the_top_face(dx, yaw_deg, dz, holds):
+    """robust-arm p11: a 4.5 cm cube on a 5 cm cube turned 30 degrees."""
+    replay = Replay(ROOT / "problems" / "robust-arm" / "p11.scene.toml")
+    try:
+        yaw = math.radians(30.0)
+        pos = [0.50 + dx * math.cos(yaw), 0.15 + dx * math.sin(yaw), 0.0725 + dz]
+        replay.place("a", matrix(pos, pb.getQuaternionFromEuler([0, 0, math.radians(yaw_deg)])))
+        found = goal_failures(replay, ["on", "a", "b"], ["a", "b"])
+    finally:
+        replay.close()
+    assert (found == []) == holds, found
