@@ -72,6 +72,7 @@ KUKA_IIWA = Arm(
     bundled=True,
     tool_link="lbr_iiwa_link_7",
     tool_frame="gripper_tcp",
+    joints=tuple(f"lbr_iiwa_joint_{i}" for i in range(1, 8)),
     fingers=Fingers(("gripper_left_joint",), (0.04,), (0.0,)),
     ready=(0.0, 0.6, 0.0, -1.3, 0.0, 1.24, 0.0),
 )
@@ -82,6 +83,7 @@ KUKA_IIWA = Arm(
 XARM6 = Arm(
     urdf="xarm/xarm6_with_gripper.urdf",
     tool_link="xarm_gripper_base_link",
+    joints=tuple(f"joint{i}" for i in range(1, 7)),
     tool_offset=(0.0, 0.0, 0.152, 0.0, 0.0, 0.0, 1.0),
     fingers=Fingers(("drive_joint",), (0.0,), (0.85,)),
     ready=(0.0, -0.6, -0.9, 0.0, 1.5, 0.0),

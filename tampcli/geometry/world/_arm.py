@@ -53,7 +53,7 @@ def load_arm(pb, client: int, scene, arm: Arm) -> LoadedArm:
     base = spec.base_pose
     uid = load_urdf(pb, client, path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]), 1.0,
                     lambda message: error(message, file_key), arm.package_paths,
-                    "; a folder in `package_paths` of [robot] is looked in too")
+                    "" if arm.package_paths else "; name more folders in `package_paths`")
     _check_names(urdf, arm, error)
     finger_names = arm.fingers.joints if arm.fingers else ()
     followers = urdf.followers(finger_names)
