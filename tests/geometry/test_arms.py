@@ -281,3 +281,29 @@ def test_urdf_tree_order_and_mimic_composition():
     followers = urdf.followers(("drive_joint",))
     assert set(followers) == set(XARM_FINGERS[1:])
     assert all(v == ("drive_joint", 1.0, 0.0) for v in followers.values())
+
+
+# ------------------------------------------------------------ docs/robots.md
+
+
+ROBOTS_MD = Path(__file__).resolve().parents[2] / "docs" / "robots.md"
+
+
+def test_robots_md_examples_are_real(tmp_path):
+    """Every TOML example of docs/robots.md is a robot table tampcli reads; with the
+    files it names put in place (a copy of the xArm URDF, edited as shown), each loads."""
+    text = ROBOTS_MD.read_text()
+    blocks = re.findall(r"```toml\n(.*?)```", text, re.DOTALL)
+    (xml,) = re.findall(r"```xml\n(.*?)```", text, re.DOTALL)
+    assert len(blocks) == 3
+    (tmp_path / "arms").mkdir()
+    shutil.copy(XARM, tmp_path / "arms" / XARM.name)
+    (tmp_path / "xarm_tcp.urdf").write_text(XARM.read_text().replace("</robot>",
+                                                                     xml + "</robot>"))
+    tools = []
+    for block in blocks:
+        path = tmp_path / "example.scene.toml"
+        path.write_text(block)
+        with World(build_scene(read_toml(str(path)))) as world:
+            tools.append(world.tool_pose(world.start if world.n == 7 else ARMS["xarm6"].ready))
+    np.testing.assert_allclose(tools[1], tools[2], atol=1e-6)  # offset and TCP link agree
