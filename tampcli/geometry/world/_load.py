@@ -1,5 +1,5 @@
-"""Scene bodies and the planar robot into a PyBullet client, with located errors
-for the files PyBullet refuses."""
+"""Scene bodies, URDF files and the planar robot into a PyBullet client, with located
+errors for the files PyBullet refuses or whose meshes are nowhere to be found."""
 
 from __future__ import annotations
 
