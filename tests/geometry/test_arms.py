@@ -307,3 +307,10 @@ def test_robots_md_examples_are_real(tmp_path):
         with World(build_scene(read_toml(str(path)))) as world:
             tools.append(world.tool_pose(world.start if world.n == 7 else ARMS["xarm6"].ready))
     np.testing.assert_allclose(tools[1], tools[2], atol=1e-6)  # offset and TCP link agree
+
+
+def test_a_given_finger_opening_moves_the_mimic_joints_along():
+    with World(Scene(None, RobotSpec("xarm6"))) as world:
+        world.set_state(world.start, fingers_closed=True, finger_opening=0.4)
+        assert _joint_values(world, XARM_FINGERS) == pytest.approx(dict.fromkeys(XARM_FINGERS,
+                                                                                 0.4))

@@ -40,8 +40,8 @@ class World:
     fingers not in q and open for kinematics and collisions; or `planar` (a
     vertical cylinder whose joints `x`, `y` hold world coordinates, bounded
     by the scene's extent). Link frames are URDF link frames; a tool offset
-    adds a link of its own (`tool_link` names it). All bodies are static in the simulator: nothing is simulated
-    unless `start_dynamics` is called.
+    adds a link of its own (`tool_link` names it). All bodies are static in
+    the simulator: nothing is simulated unless `start_dynamics` is called.
     """
 
     def __init__(self, scene: Scene):
@@ -131,7 +131,7 @@ class World:
             start = np.array(spec.start, dtype=float)
         elif arm is None:
             start = base[:2, 3].copy()
-        elif arm.ready is not None and len(arm.ready) == len(joints):
+        elif arm.ready is not None:
             start = np.array(arm.ready, dtype=float)
         else:
             start = np.clip(np.zeros(len(joints)), self.lower, self.upper)
@@ -280,10 +280,9 @@ class World:
         if not fingers_closed:
             return
         if finger_opening is not None:
-            k = len(self._fingers.names)
-            values = list(self._fingers.open)
-            values[:k] = [float(finger_opening)] * k
-            self._set_fingers(values)
+            # Joints that mimic a finger follow it: the same fraction of their travel.
+            (open_, closed) = self._fingers.open[0], self._fingers.closed[0]
+            self._set_fingers(self._fingers.at((float(finger_opening) - open_) / (closed - open_)))
             return
         closing_fraction(self._pb, self._client, self._robot, self._fingers,
                          self._between_fingers())
