@@ -53,7 +53,8 @@ def load_arm(pb, client: int, scene, arm: Arm) -> LoadedArm:
     base = spec.base_pose
     uid = load_urdf(pb, client, path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]), 1.0,
                     lambda message: error(message, file_key), arm.package_paths,
-                    "" if arm.package_paths else "; name more folders in `package_paths`")
+                    "; name more folders in `package_paths`"
+                    if spec.model == "urdf" and not arm.package_paths else "")
     _check_names(urdf, arm, error)
     finger_names = arm.fingers.joints if arm.fingers else ()
     followers = urdf.followers(finger_names)
