@@ -295,7 +295,7 @@ def test_robots_md_examples_are_real(tmp_path):
     text = ROBOTS_MD.read_text()
     blocks = re.findall(r"```toml\n(.*?)```", text, re.DOTALL)
     (xml,) = re.findall(r"```xml\n(.*?)```", text, re.DOTALL)
-    assert len(blocks) == 3
+    assert len(blocks) == 5
     (tmp_path / "arms").mkdir()
     shutil.copy(XARM, tmp_path / "arms" / XARM.name)
     (tmp_path / "xarm_tcp.urdf").write_text(XARM.read_text().replace("</robot>",
@@ -306,7 +306,9 @@ def test_robots_md_examples_are_real(tmp_path):
         path.write_text(block)
         with World(build_scene(read_toml(str(path)))) as world:
             tools.append(world.tool_pose(world.start if world.n == 7 else ARMS["xarm6"].ready))
-    np.testing.assert_allclose(tools[1], tools[2], atol=1e-6)  # offset and TCP link agree
+    # The xArm three ways (built in, a URDF with an offset, a TCP link) has one tool frame.
+    np.testing.assert_allclose(tools[1], tools[3], atol=1e-6)
+    np.testing.assert_allclose(tools[3], tools[4], atol=1e-6)
 
 
 def test_a_given_finger_opening_moves_the_mimic_joints_along():
