@@ -38,12 +38,16 @@ EXPECTED = {
     "arm-hanoi/p01": (14, 14, 60),
     "arm-hanoi/p02": (6, 6, 30),
     "arm-kitchen/p01": (10, 10, 120),
+    "arm-kuka/p01": (2, 2, 30),
+    "arm-kuka/p02": (2, 2, 30),
     "arm-pick-place/p01": (2, 2, 30),
     "arm-pick-place/p02": (2, 2, 30),
     "arm-pick-place/p03": (4, 4, 30),
     "arm-pick-place/p04": (2, 4, 30),
     "arm-pick-place/p05": (4, 4, 30),
     "arm-sort/p01": (8, 8, 300),
+    "arm-xarm/p01": (2, 2, 30),
+    "arm-xarm/p02": (2, 2, 30),
     "blocksworld/p01": (6, 6, None),
     "blocksworld/p02": (8, 8, None),
     "blocksworld/p03": (12, 12, None),
@@ -61,7 +65,8 @@ EXPECTED = {
 
 GAP = 0.01  # bodies not in contact are at least this far apart at the start (m)
 TOL = 1e-9
-PANDA_REACH = (0.3, 0.7)  # horizontal distance from the base of what the arm handles (m)
+# Horizontal distance from the base of what each arm handles (m).
+REACH = {"panda": (0.3, 0.7), "kuka_iiwa": (0.4, 0.75), "xarm6": (0.25, 0.5)}
 
 
 # The robustness sets (problems/robust-*) were written blind, before tuning, to
@@ -104,7 +109,7 @@ def test_library_is_complete():
     domains = sorted(d.name for d in DOMAINS.iterdir()
                      if d.is_dir() and not d.name.startswith(ROBUST))
     assert {"planar-push", "planar-tamp", "arm-pick-place", "arm-kitchen", "arm-hanoi",
-            "arm-sort", "gripper", "blocksworld"} <= set(domains)
+            "arm-sort", "arm-kuka", "arm-xarm", "gripper", "blocksworld"} <= set(domains)
     for name in domains:
         assert (DOMAINS / name / "domain.pddl").is_file(), name
         assert (DOMAINS / name / "README.md").is_file(), name
@@ -375,7 +380,7 @@ def test_goal_regions_can_hold_their_objects(problem):
 def test_within_reach(problem):
     scene = _Scene.load(_scene_file(problem))
     robot = scene.robot
-    if robot["model"] != "panda":
+    if robot["model"] not in REACH:
         return  # a planar robot reaches its whole support; regions are checked on it above
     bx, by = robot["base"][:2]
     centres = [((b.lo[0] + b.hi[0]) / 2, (b.lo[1] + b.hi[1]) / 2)
@@ -383,7 +388,8 @@ def test_within_reach(problem):
     centres += [((r.lo[0] + r.hi[0]) / 2, (r.lo[1] + r.hi[1]) / 2) for r in scene.regions.values()]
     for x, y in centres:
         d = math.hypot(x - bx, y - by)
-        assert PANDA_REACH[0] - TOL <= d <= PANDA_REACH[1] + TOL, (x, y, d)
+        near, far = REACH[robot["model"]]
+        assert near - TOL <= d <= far + TOL, (x, y, d)
 
 
 def _formulas(formula):

@@ -11,10 +11,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from tampcli.geometry import transforms
+from tampcli.geometry.arms import ARMS, PANDA, Arm, Fingers
 
 SHAPES = ("box", "cylinder", "sphere", "mesh", "urdf")
-ROBOT_MODELS = ("panda", "planar", "urdf")
-PANDA_READY = (0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785)
+ROBOT_MODELS = (*ARMS, "planar", "urdf")
+PANDA_READY = PANDA.ready
 
 COLORS = {
     "red": (0.85, 0.15, 0.15, 1.0),
@@ -37,7 +38,8 @@ DEFAULT_COLOR = (0.6, 0.6, 0.6, 1.0)
 
 @dataclass(frozen=True)
 class RobotSpec:
-    """The robot: `panda`, `planar` (a disk moving in x, y) or any `urdf` arm."""
+    """The robot: a built-in arm (`panda`, `kuka_iiwa`, `xarm6`), `planar` (a disk
+    moving in x, y) or any `urdf` arm (see docs/robots.md)."""
 
     model: str
     base: tuple[float, ...] = (0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)  # xyz + quat (x, y, z, w)
@@ -46,12 +48,27 @@ class RobotSpec:
     height: float = 0.05  # planar only (m)
     urdf: str | None = None  # resolved path (model "urdf")
     tool_link: str | None = None
-    joints: tuple[str, ...] | None = None
+    joints: tuple[str, ...] | None = None  # None: from the URDF's tree
+    tool_offset: tuple[float, ...] | None = None  # xyz + quat in tool_link's frame
+    tool_frame: str | None = None  # a link whose frame is the tool frame
+    fingers: Fingers | None = None
+    package_paths: tuple[str, ...] = ()  # resolved folders
     line: int | None = field(default=None, compare=False)
 
     @property
     def base_pose(self) -> np.ndarray:
         return transforms.pose_from_xyzquat(self.base)
+
+    @property
+    def arm(self) -> Arm | None:
+        """The arm to load: a built-in one, or the scene's URDF; None for `planar`."""
+        if self.model in ARMS:
+            return ARMS[self.model]
+        if self.model != "urdf":
+            return None
+        return Arm(urdf=self.urdf, tool_link=self.tool_link, joints=self.joints,
+                   fingers=self.fingers, tool_offset=self.tool_offset,
+                   tool_frame=self.tool_frame, package_paths=self.package_paths)
 
 
 @dataclass(frozen=True)

@@ -9,6 +9,7 @@ import numpy as np
 
 from tampcli.errors import SceneError, source_line_at
 from tampcli.geometry import transforms
+from tampcli.geometry.arms import ARMS, Fingers
 from tampcli.geometry.model import (
     COLORS,
     DEFAULT_COLOR,
@@ -23,7 +24,10 @@ from tampcli.geometry.model import (
 from tampcli.geometry.region_check import is_upright, region_overhang
 from tampcli.geometry.tomlsrc import TomlSource
 
-_ROBOT_KEYS = ("model", "base", "start", "radius", "height", "urdf", "tool_link", "joints")
+_ROBOT_KEYS = ("model", "base", "start", "radius", "height", "urdf", "tool_link", "tool_offset",
+               "joints", "fingers", "package_paths")
+_URDF_KEYS = ("urdf", "tool_link", "tool_offset", "joints", "fingers", "package_paths")
+_FINGER_KEYS = ("joints", "open", "closed")
 _OBJECT_KEYS = ("name", "shape", "size", "pose", "fixed", "color", "mesh", "urdf", "scale")
 _REGION_KEYS = ("name", "on", "center", "size", "color")
 _CAMERA_KEYS = ("eye", "target", "up", "fov")
@@ -213,29 +217,91 @@ def _robot(src: TomlSource, data: dict) -> RobotSpec:
     start = r.numbers("start", range(1, 64), "a list of joint values", required=False)
     radius = r.number("radius", 0.05, positive=True)
     height = r.number("height", 0.05, positive=True)
-    urdf = r.path("urdf")
-    tool_link = r.string("tool_link")
-    joints = r.strings("joints")
     if model == "urdf":
-        if urdf is None:
-            raise r.error("model \"urdf\" needs `urdf`, `tool_link` and `joints`", "model")
-        if tool_link is None or joints is None:
-            raise r.error("a URDF robot needs `tool_link` and `joints`", "urdf")
+        if not r.has("urdf"):
+            raise r.error("model \"urdf\" needs `urdf` (the file) and `tool_link` (the link "
+                          "the tool is fixed to); see docs/robots.md", "model")
+        if not r.has("tool_link"):
+            raise r.error("a URDF robot needs `tool_link`: the link the tool is fixed to "
+                          "(see docs/robots.md)", "urdf")
     else:
-        for key in ("urdf", "tool_link", "joints"):
+        for key in _URDF_KEYS:
             if r.has(key):
                 raise r.error(f"only for model \"urdf\", not {model!r}", key)
     if model != "planar":
         for key in ("radius", "height"):
             if r.has(key):
                 raise r.error(f"only for model \"planar\", not {model!r}", key)
+    joints = r.strings("joints")
     if start is not None:
-        expected = {"panda": 7, "planar": 2}.get(model, len(joints or ()))
-        if len(start) != expected:
-            raise r.error(f"expected {expected} joint values for the {model} robot, "
+        known = {"planar": ("x", "y")}.get(model) or joints or (
+            ARMS[model].joints if model in ARMS else None)
+        if known is not None and len(start) != len(known):
+            raise r.error(f"expected {len(known)} joint values for the {model} robot, "
                           f"got {len(start)}", "start")
-    return RobotSpec(model, base, start, radius, height, urdf, tool_link, joints,
+    offset, frame = _tool_offset(r)
+    return RobotSpec(model, base, start, radius, height, r.path("urdf"), r.string("tool_link"),
+                     joints, offset, frame, _fingers(r), _folders(r, "package_paths"),
                      line=src.line("robot"))
+
+
+def _tool_offset(r: _Reader):
+    """(pose as xyz + quat, None) or (None, link name) or (None, None)."""
+    if not r.has("tool_offset"):
+        return None, None
+    value = r.data["tool_offset"]
+    if isinstance(value, str):
+        return None, r.string("tool_offset")
+    values = r.numbers("tool_offset", (3, 4, 6, 7), "a pose [x, y, z], [x, y, z, yaw], "
+                       "[x, y, z, roll, pitch, yaw] or [x, y, z, qx, qy, qz, qw], or the name "
+                       "of a link")
+    if len(values) == 7 and np.linalg.norm(values[3:]) < 1e-9:
+        raise r.error("the quaternion [qx, qy, qz, qw] must not be zero", "tool_offset")
+    return tuple(transforms.xyzquat_from_pose(transforms.pose_from_list(values))), None
+
+
+def _fingers(r: _Reader) -> Fingers | None:
+    if not r.has("fingers"):
+        return None
+    data = r.data["fingers"]
+    what = "a table { joints = [names], open = value(s), closed = value(s) }"
+    if not isinstance(data, dict):
+        raise r.error(f"expected {what}, got {_show(data)}", "fingers")
+    for key in data:
+        if key not in _FINGER_KEYS:
+            raise r.error(f"unknown key {key!r}; expected one of {', '.join(_FINGER_KEYS)}",
+                          "fingers")
+    joints = data.get("joints")
+    if not isinstance(joints, list) or not joints or not all(
+            isinstance(j, str) and j for j in joints):
+        raise r.error(f"fingers.joints: expected a non-empty list of joint names, got "
+                      f"{_show(joints)}", "fingers")
+    values = {}
+    for key in ("open", "closed"):
+        value = data.get(key)
+        if isinstance(value, int | float) and not isinstance(value, bool):
+            value = [value] * len(joints)
+        ok = (isinstance(value, list) and len(value) == len(joints)
+              and all(isinstance(v, int | float) and not isinstance(v, bool)
+                      and math.isfinite(v) for v in value))
+        if not ok:
+            raise r.error(f"fingers.{key}: expected a joint value, or one per finger joint "
+                          f"({len(joints)}), got {_show(value)}", "fingers")
+        values[key] = tuple(float(v) for v in value)
+    if values["open"] == values["closed"]:
+        raise r.error("fingers: `open` and `closed` are the same values", "fingers")
+    return Fingers(tuple(joints), values["open"], values["closed"])
+
+
+def _folders(r: _Reader, key: str) -> tuple[str, ...]:
+    names = r.strings(key) or ()
+    out = []
+    for name in names:
+        folder = Path(r.src.path).parent / name
+        if not folder.is_dir():
+            raise r.error(f"no such folder: {folder}", key)
+        out.append(str(folder))
+    return tuple(out)
 
 
 def _body(src: TomlSource, index: int, data: dict) -> Body:

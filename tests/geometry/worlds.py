@@ -68,4 +68,4 @@ class Simulator:
 
 def simulator(world) -> Simulator:
     return Simulator(world._pb, world._client, world._robot, dict(world._bodies),
-                     world._fingers)
+                     world._fingers.pb if world._fingers else ())

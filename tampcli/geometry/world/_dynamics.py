@@ -17,7 +17,7 @@ class Dynamics:
 
     def __init__(self, pb, client: int, robot: int, bodies: dict[str, int],
                  joint_names: tuple[str, ...], tool_link: str, fingers: tuple[int, ...],
-                 finger_open: float, hz: float, gravity: float):
+                 finger_open: tuple[float, ...], hz: float, gravity: float):
         self._pb, self._client, self._robot, self._bodies = pb, client, robot, bodies
         c = client
         by_name, links, movable = {}, {}, []
@@ -56,7 +56,7 @@ class Dynamics:
         if self._fingers:  # open: the constraint holds the object, not friction
             k = len(self._fingers)
             pb.setJointMotorControlArray(self._robot, self._fingers, pb.POSITION_CONTROL,
-                                         targetPositions=[self._finger_open] * k,
+                                         targetPositions=list(self._finger_open),
                                          forces=[finger_force] * k, physicsClientId=c)
 
     def hold(self, name: str | None, max_force: float) -> None:

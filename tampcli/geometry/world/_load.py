@@ -1,12 +1,19 @@
-"""Scene bodies and the planar robot into a PyBullet client, with located errors
-for the files PyBullet refuses."""
+"""Scene bodies, URDF files and the planar robot into a PyBullet client, with located
+errors for the files PyBullet refuses or whose meshes are nowhere to be found."""
 
 from __future__ import annotations
+
+import os
+import sys
+import tempfile
+from contextlib import contextmanager
+from pathlib import Path
 
 from tampcli.errors import SceneError
 from tampcli.geometry.scene import Body, Scene
 from tampcli.geometry.scene_check import body_error, urdf_problem
 from tampcli.geometry.shapes import mesh_hulls
+from tampcli.geometry.urdf_file import resolved_copy
 
 PLANAR_COLOR = (0.9, 0.5, 0.1, 1.0)
 
@@ -66,19 +73,72 @@ def _load_mesh(pb, client: int, scene: Scene, body: Body) -> tuple[int, int]:
     return col, vis
 
 
-def load_urdf(pb, client: int, path, pos, orn, scale: float, error) -> int:
+def load_urdf(pb, client: int, path, pos, orn, scale: float, error,
+              package_paths=(), hint: str = "") -> int:
     """loadURDF (fixed base); `error(message)` makes the located SceneError for a file
-    it refuses."""
-    problem = urdf_problem(path)
+    it refuses, or a mesh it names that is nowhere to be found.
+
+    Mesh paths PyBullet would not find itself (`package://`, or beside a
+    copy of the file) are made absolute in a temporary copy; what PyBullet
+    prints on the C-level terminal is kept off it, and its last complaint
+    joins the message when it refuses the file.
+    """
+    text, problem = None, urdf_problem(path)
+    if problem is None:
+        try:
+            text, problem = resolved_copy(path, package_paths, hint)
+        except ValueError as e:
+            problem = str(e)
     if problem:
         raise error(problem)
+    with tempfile.TemporaryDirectory(prefix="tampcli-urdf-") as folder:
+        target = path
+        if text is not None:
+            target = str(Path(folder) / Path(path).name)
+            Path(target).write_text(text, encoding="utf-8")
+        with _quiet_c_output() as printed:
+            try:
+                return pb.loadURDF(target, pos, orn, useFixedBase=True, globalScaling=scale,
+                                   physicsClientId=client)
+            except pb.error as e:
+                reason = str(e).rstrip(".")
+        said = _complaint(printed)
+        raise error(f"PyBullet cannot load {path}: {reason}"
+                    + (f" ({said})" if said else " (a malformed link or joint)"))
+
+
+@contextmanager
+def _quiet_c_output():
+    """Send fds 1 and 2 to a file while the block runs; yield the list of lines
+    written (filled when the block ends)."""
+    printed: list[str] = []
+    sys.stdout.flush()
+    sys.stderr.flush()
     try:
-        return pb.loadURDF(path, pos, orn, useFixedBase=True, globalScaling=scale,
-                           physicsClientId=client)
-    except pb.error as e:
-        reason = str(e).rstrip(".")
-        raise error(f"PyBullet cannot load {path}: {reason} (a malformed link, or a mesh "
-                    "file it names is missing)") from None
+        saved = (os.dup(1), os.dup(2))
+    except OSError:  # no terminal descriptors to guard
+        yield printed
+        return
+    with tempfile.TemporaryFile() as sink:
+        try:
+            os.dup2(sink.fileno(), 1)
+            os.dup2(sink.fileno(), 2)
+            yield printed
+        finally:
+            os.dup2(saved[0], 1)
+            os.dup2(saved[1], 2)
+            for fd in saved:
+                os.close(fd)
+            sink.seek(0)
+            printed.extend(sink.read().decode("utf-8", errors="replace").splitlines())
+
+
+def _complaint(lines: list[str]) -> str:
+    """The last line of PyBullet's output that says something (not a source location)."""
+    said = [line.removeprefix("b3Printf:").strip() for line in lines]
+    said = [line for line in said if line and not line.startswith(("b3Warning[", "b3Error["))
+            and "build time" not in line]
+    return said[-1] if said else ""
 
 
 def make_planar(pb, client: int, radius: float, height: float, z: float) -> int:

@@ -162,3 +162,42 @@ def aabb(pb, client: int, body: int, links=None) -> tuple[np.ndarray, np.ndarray
         los.append(lo)
         his.append(hi)
     return np.min(los, axis=0), np.max(his, axis=0)
+
+
+def gripper_size(pb, client: int, body: int, fingers, chain, tool: int, q,
+                 reach: float = 0.02) -> tuple[float, float] | None:
+    """(opening, fingertip depth) of open fingers at configuration q, in the tool frame
+    (chain link `tool`), from the exact support of their collision shapes.
+
+    Opening: the gap along y between the finger parts on either side that
+    come within `reach` of the tool origin's height (linkage bars higher up
+    are not what closes on an object). Depth: how far they reach along z.
+    """
+    if fingers is None:
+        return None
+    frames = chain.fk_list(q)
+    to_tool = transforms.pose_inverse(frames[tool])
+    by_pb = {link.pb_index: i for i, link in enumerate(chain.links)}
+    depth, left, right = -np.inf, np.inf, np.inf
+    y, z = np.array([0.0, 1.0, 0.0]), np.array([0.0, 0.0, 1.0])
+    for link in fingers.links:
+        for shape in link_shapes(pb, client, body, link):
+            f = to_tool @ frames[by_pb[link]] @ shape.local
+            rot, at = f[:3, :3], f[:3, 3]
+
+            def extent(d, rot=rot, at=at, shape=shape):
+                return shape.support(rot.T @ d) + float(d @ at)
+
+            top = extent(z)
+            depth = max(depth, top)
+            if top < -reach:
+                continue
+            low_y, high_y = -extent(-y), extent(y)
+            if low_y > 0:
+                left = min(left, low_y)
+            elif high_y < 0:
+                right = min(right, -high_y)
+    if not np.isfinite(depth):
+        return None
+    opening = left + right if np.isfinite(left) and np.isfinite(right) else 0.0
+    return float(opening), float(depth)

@@ -10,40 +10,38 @@ only `set_state` (for replay), `add_visual_box` (scenery) and
 from __future__ import annotations
 
 import math
-from pathlib import Path
 
 import numpy as np
 
 from tampcli.geometry import transforms
-from tampcli.geometry.chain import REVOLUTE, Chain
+from tampcli.geometry.arms import PANDA
+from tampcli.geometry.chain import REVOLUTE
 from tampcli.geometry.ik import solve_ik
-from tampcli.geometry.scene import PANDA_READY, Scene
+from tampcli.geometry.scene import Scene
 from tampcli.geometry.scene_check import entry_error
 from tampcli.geometry.shapes import Shape
 from tampcli.geometry.world import _measure
+from tampcli.geometry.world._arm import FingerJoints, closing_fraction, load_arm, tool_frame
 from tampcli.geometry.world._dynamics import Dynamics
-from tampcli.geometry.world._load import load_body, load_urdf, make_planar
-from tampcli.geometry.world._pybullet import pybullet, pybullet_data
+from tampcli.geometry.world._load import load_body, make_planar
+from tampcli.geometry.world._pybullet import pybullet
 
-PANDA_URDF = "franka_panda/panda.urdf"
-PANDA_JOINTS = tuple(f"panda_joint{i}" for i in range(1, 8))
-PANDA_TOOL = "panda_grasptarget"
-PANDA_FINGERS = ("panda_finger_joint1", "panda_finger_joint2")
-PANDA_FINGER_OPEN = 0.04
+PANDA_FINGERS = PANDA.fingers.joints
+PANDA_FINGER_OPEN = PANDA.fingers.open[0]
 PLANAR_LINKS = ("planar_x", "planar_body")
 
 
 class World:
     """A scene in PyBullet; use as a context manager or call `close()`.
 
-    Robots: `panda` (pybullet_data's Franka Panda, fixed base at `base`; q =
-    the 7 arm joints; tool frame `panda_grasptarget`, 0.105 m beyond the hand
-    along its z axis; the fingers are not in q and stay open for kinematics
-    and collisions); `planar` (a vertical cylinder whose joints `x`, `y` hold
-    world coordinates, bounded by the scene's extent); or any URDF arm with
-    the `joints` and `tool_link` the scene names. Link frames are URDF link
-    frames. All bodies are static in the simulator: nothing is simulated
-    unless `start_dynamics` is called.
+    Robots: an arm (a built-in one of geometry/arms.py, e.g. the Panda with
+    tool frame `panda_grasptarget`, 0.105 m beyond the hand along its z axis;
+    or the scene's URDF), fixed base at `base`, q = its arm joints, its
+    fingers not in q and open for kinematics and collisions; or `planar` (a
+    vertical cylinder whose joints `x`, `y` hold world coordinates, bounded
+    by the scene's extent). Link frames are URDF link frames; a tool offset
+    adds a link of its own (`tool_link` names it). All bodies are static in
+    the simulator: nothing is simulated unless `start_dynamics` is called.
     """
 
     def __init__(self, scene: Scene):
@@ -84,47 +82,34 @@ class World:
     def _load_robot(self) -> None:
         pb, c, spec = self._pb, self._client, self.scene.robot
         base = spec.base_pose
-        self._fingers: tuple[int, ...] = ()
+        self._fingers: FingerJoints | None = None
+        arm = spec.arm
         link_names = None
-        if spec.model == "planar":
+        if arm is None:  # planar
             uid = make_planar(pb, c, spec.radius, spec.height, float(base[2, 3]))
-            joints = ("x", "y")
-            tool = "planar_body"
-            pb_joint_names = {0: "x", 1: "y"}
+            joints: tuple[str, ...] = ("x", "y")
+            pb_joints: tuple[int, ...] = (0, 1)
             link_names = {-1: "planar_base", 0: PLANAR_LINKS[0], 1: PLANAR_LINKS[1]}
         else:
-            if spec.model == "panda":
-                path = str(Path(pybullet_data.getDataPath()) / PANDA_URDF)
-                joints, tool = PANDA_JOINTS, PANDA_TOOL
-            else:
-                path, joints, tool = spec.urdf, spec.joints, spec.tool_link
-            uid = load_urdf(pb, c, path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]),
-                            1.0, lambda message: entry_error(self.scene, message,
-                                                             "robot", 0, "urdf"))
-            pb_joint_names = {j: pb.getJointInfo(uid, j, physicsClientId=c)[1].decode()
-                              for j in range(pb.getNumJoints(uid, physicsClientId=c))}
+            loaded = load_arm(pb, c, self.scene, arm)
+            uid, joints, self._fingers = loaded.uid, loaded.joints, loaded.fingers
+            by_name = {pb.getJointInfo(uid, j, physicsClientId=c)[1].decode(): j
+                       for j in range(pb.getNumJoints(uid, physicsClientId=c))}
+            pb_joints = tuple(by_name[j] for j in joints)
         self._robot = uid
-        by_name = {name: j for j, name in pb_joint_names.items()}
-        missing = [j for j in joints if j not in by_name]
-        if missing:
-            raise entry_error(self.scene, f"the robot has no joint named {', '.join(missing)}; "
-                              f"it has {', '.join(by_name)}", "robot", 0, "joints")
         self.joint_names: tuple[str, ...] = tuple(joints)
-        self._pb_joints = tuple(by_name[j] for j in joints)
+        self._pb_joints = pb_joints
         fixed_values = {}
-        if spec.model == "panda":
-            self._fingers = tuple(by_name[f] for f in PANDA_FINGERS)
-            fixed_values = {j: PANDA_FINGER_OPEN for j in self._fingers}
-            for j in self._fingers:
-                pb.resetJointState(uid, j, PANDA_FINGER_OPEN, physicsClientId=c)
-        self.chain: Chain = _measure.measure_chain(
-            pb, c, uid, _pb_names_to_q(pb, c, uid, self._pb_joints), fixed_values, link_names)
+        if self._fingers is not None:
+            fixed_values = dict(zip(self._fingers.pb, self._fingers.open, strict=True))
+            self._set_fingers(self._fingers.open)
+        chain = _measure.measure_chain(pb, c, uid, _pb_names_to_q(pb, c, uid, pb_joints),
+                                       fixed_values, link_names)
+        self._tool_pb_link = "planar_body" if arm is None else arm.tool_link
+        self.chain, self.tool_link = tool_frame(self.scene, chain, arm, PLANAR_LINKS[1])
         self.link_names: tuple[str, ...] = self.chain.names
-        if tool not in self.chain.index:
-            raise entry_error(self.scene, f"the robot has no link named {tool!r}", "robot", 0,
-                              "tool_link")
-        self.tool_link = tool
-        self._tool_index = self.chain.index[tool]
+        self._tool_index = self.chain.index[self.tool_link]
+        self._virtual_tool = len(self.chain.links) > len(chain.links)
         lower, upper = [], []
         for j in self._pb_joints:
             info = pb.getJointInfo(uid, j, physicsClientId=c)
@@ -133,23 +118,29 @@ class World:
                 lo, hi = -math.pi, math.pi
             lower.append(lo)
             upper.append(hi)
-        if spec.model == "planar":
+        if arm is None:
             lo, hi = self._scene_extent()
             lower, upper = list(lo[:2]), list(hi[:2])
         self.lower = np.array(lower, dtype=float)
         self.upper = np.array(upper, dtype=float)
         if spec.start is not None:
+            if len(spec.start) != len(joints):
+                raise entry_error(self.scene, f"expected {len(joints)} joint values (for "
+                                  f"{', '.join(joints)}), got {len(spec.start)}", "robot", 0,
+                                  "start")
             start = np.array(spec.start, dtype=float)
-        elif spec.model == "panda":
-            start = np.array(PANDA_READY)
-        elif spec.model == "planar":
+        elif arm is None:
             start = base[:2, 3].copy()
+        elif arm.ready is not None:
+            start = np.array(arm.ready, dtype=float)
         else:
             start = np.clip(np.zeros(len(joints)), self.lower, self.upper)
         self.start = start
         for v in (self.lower, self.upper, self.start):
             v.flags.writeable = False
         self._set_joints(self.start)
+        self._gripper = _measure.gripper_size(pb, c, uid, self._fingers, self.chain,
+                                              self._tool_index, self.start)
 
     def _scene_extent(self) -> tuple[np.ndarray, np.ndarray]:
         """Box around all bodies (x, y, z); a unit box about the base when the scene is empty."""
@@ -185,7 +176,27 @@ class World:
     @property
     def finger_names(self) -> tuple[str, ...]:
         """The gripper's finger joints (not in q: they open and close, never plan)."""
-        return PANDA_FINGERS if self._fingers else ()
+        return self._fingers.names if self._fingers else ()
+
+    @property
+    def finger_range(self) -> tuple[tuple[float, float], ...]:
+        """(open, closed) value of each joint of `finger_names`."""
+        if self._fingers is None:
+            return ()
+        k = len(self._fingers.names)
+        return tuple(zip(self._fingers.open[:k], self._fingers.closed[:k], strict=True))
+
+    @property
+    def gripper_opening(self) -> float | None:
+        """Gap (m) between the open fingers along the tool's y axis, near the tool
+        origin: the widest object they close on. None without fingers."""
+        return self._gripper[0] if self._gripper else None
+
+    @property
+    def fingertip_depth(self) -> float | None:
+        """How far (m) the open fingertips reach beyond the tool origin along the
+        tool's z axis (the Panda's: 1 cm). None without fingers."""
+        return self._gripper[1] if self._gripper else None
 
     @property
     def movable_names(self) -> tuple[str, ...]:
@@ -243,20 +254,19 @@ class World:
         for j, v in zip(self._pb_joints, q, strict=True):
             self._pb.resetJointState(self._robot, j, float(v), physicsClientId=self._client)
 
+    def _set_fingers(self, values) -> None:
+        for j, v in zip(self._fingers.pb, values, strict=True):
+            self._pb.resetJointState(self._robot, j, float(v), physicsClientId=self._client)
+
     def set_state(self, q, body_poses: dict | None = None, fingers_closed: bool = False,
                   finger_opening: float | None = None) -> None:
         """Move the robot and bodies in the simulator (for replay only).
 
-        Fingers: open, or closed to `finger_opening` per finger (m) when given,
-        else fully closed.
+        Fingers: open; or closed, to `finger_opening` (the value of every
+        finger joint named in the scene) when given, else until they touch a
+        movable body between them (fully closed when none is).
         """
         self._set_joints(np.asarray(q, dtype=float))
-        if self._fingers:
-            value = PANDA_FINGER_OPEN
-            if fingers_closed:
-                value = 0.0 if finger_opening is None else float(finger_opening)
-            for j in self._fingers:
-                self._pb.resetJointState(self._robot, j, value, physicsClientId=self._client)
         for name, t in (body_poses or {}).items():
             t = np.asarray(t, dtype=float)
             if t.shape == (7,):
@@ -264,6 +274,29 @@ class World:
             self._pb.resetBasePositionAndOrientation(
                 self._bodies[name], t[:3, 3], transforms.matrix_to_quat(t[:3, :3]),
                 physicsClientId=self._client)
+        if self._fingers is None:
+            return
+        self._set_fingers(self._fingers.open)
+        if not fingers_closed:
+            return
+        if finger_opening is not None:
+            # Joints that mimic a finger follow it: the same fraction of their travel.
+            (open_, closed) = self._fingers.open[0], self._fingers.closed[0]
+            self._set_fingers(self._fingers.at((float(finger_opening) - open_) / (closed - open_)))
+            return
+        closing_fraction(self._pb, self._client, self._robot, self._fingers,
+                         self._between_fingers())
+
+    def _between_fingers(self) -> list[int]:
+        """Movable bodies whose boxes meet the open fingers' box."""
+        lo, hi = _measure.aabb(self._pb, self._client, self._robot, self._fingers.links)
+        found = []
+        for name in self.movable_names:
+            uid = self._bodies[name]
+            b_lo, b_hi = self._aabb(uid)
+            if np.all(b_lo <= hi) and np.all(lo <= b_hi):
+                found.append(uid)
+        return found
 
     def camera_image(self, width: int, height: int, eye, target, up=(0.0, 0.0, 1.0),
                      fov: float = 50.0) -> np.ndarray:
@@ -306,14 +339,17 @@ class World:
 
         For a World of its own: the bodies made dynamic move for good.
         """
+        fingers = self._fingers
         return Dynamics(self._pb, self._client, self._robot, dict(self._bodies),
-                        self.joint_names, self.tool_link, self._fingers, PANDA_FINGER_OPEN, hz,
-                        gravity)
+                        self.joint_names, self._tool_pb_link, fingers.pb if fingers else (),
+                        fingers.open if fingers else (), hz, gravity)
 
     # ------------------------------------------------------------ collision shapes
 
     def robot_link_shapes(self, link: int) -> list[Shape]:
         """Collision shapes of robot link `link` (index in `chain.links`), in its frame."""
+        if link == self._tool_index and self._virtual_tool:
+            return []  # the tool frame is an offset, no link of the URDF
         return _measure.link_shapes(self._pb, self._client, self._robot,
                                     self.chain.links[link].pb_index)
 

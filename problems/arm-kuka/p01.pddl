@@ -1,0 +1,7 @@
+; One cube from the right of the robot to a goal region on its left.
+(define (problem arm-kuka-p01)
+  (:domain arm-kuka)
+  (:objects a - block
+            start goal - region)
+  (:init (at a start) (clear a) (handempty))
+  (:goal (at a goal)))
