@@ -106,13 +106,24 @@ class Timers:
 
 
 class _TimedSkeletons:
-    """Wraps the top-k generator: counts the time spent producing skeletons."""
+    """Wraps the skeleton source: counts the time spent producing skeletons
+    (search.learned.LearningSource: its bound and learning pass through)."""
 
     def __init__(self, topk, timers: Timers):
         self.topk, self.timers = topk, timers
 
     def forbid_prefix(self, names):
         self.topk.forbid_prefix(names)
+
+    def solved(self, names):
+        self.topk.solved(names)
+
+    def lower_bound(self) -> float:
+        start = time.perf_counter()
+        try:
+            return self.topk.lower_bound()
+        finally:
+            self.timers.add("search", time.perf_counter() - start)
 
     def __iter__(self):
         iterator = iter(self.topk)
@@ -234,16 +245,35 @@ class _Geometry:
 def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
+        from tampcli.optimize.blockers import blocker_of
+        from tampcli.search.learned import LearningSource
         from tampcli.search.topk import TopK
 
-        evaluate = _Evaluator(inputs, geometry, options,
-                              time.perf_counter() + options.bnb.time_limit)
+        deadline = time.perf_counter() + options.bnb.time_limit
+        evaluate = _Evaluator(inputs, geometry, options, deadline)
     modes = inputs.modes
-    topk = TopK(inputs.task, loopless=True, time_limit=options.bnb.time_limit)
+    movable = frozenset(geometry.world.movable_names)
+
+    def make_topk(task):
+        return TopK(task, loopless=True, time_limit=max(deadline - time.perf_counter(), 1e-3))
+
+    def moves(op) -> frozenset[str]:
+        mode = modes.get_mode(op.action)
+        moved = mode.bind(op.args)["object"] if mode.geometric and mode.object else None
+        return frozenset({moved}) if moved in movable else frozenset()
+
+    source = LearningSource(inputs.task, make_topk, moves)
+
+    def learn(result) -> None:
+        blocker = blocker_of(getattr(result, "worst_constraint", None), movable)
+        if blocker is not None:
+            source.learn(blocker)
+
     bnb_start = time.perf_counter()
-    result = branch_and_bound(_TimedSkeletons(topk, timers), evaluate, options.bnb,
-                              is_geometric=lambda op: modes.get_mode(op.action).kind != "none",
-                              on_event=on_event)
+    result = branch_and_bound(_TimedSkeletons(source, timers), evaluate, options.bnb,
+                              is_geometric=lambda op: modes.get_mode(op.action).geometric,
+                              on_event=on_event, learn=learn)
+    result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
     timers.add("optimize", result.stats.get("optimize_seconds", 0.0))
     timers.add("bnb", time.perf_counter() - bnb_start)
     return _solution(inputs, geometry.world, options, result, _stats(timers, result.stats))

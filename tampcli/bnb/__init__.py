@@ -11,8 +11,11 @@ Objective of a solution: trajectory cost + w * symbolic cost.
 
 Bounds, honestly labelled:
 - proved: a trajectory cost is >= 0, so every skeleton not yet drawn has an
-  objective >= w * (its symbolic cost) >= w * (the last symbolic cost drawn);
-  when that reaches the incumbent, the incumbent is optimal and we stop.
+  objective >= w * (its symbolic cost) >= w * (the cheapest symbolic cost not
+  drawn yet: the last one drawn, for a source in non-decreasing cost; the
+  source's own `lower_bound()` for one that reorders skeletons by what it
+  learned); when that reaches the incumbent, the incumbent is optimal and we
+  stop.
   An infeasibility is proved only when the evaluator says so (`proved`,
   e.g. a region out of reach by a distance argument).
 - heuristic: the keyframe NLP's optimum (a lower bound of the path cost for
@@ -73,7 +76,12 @@ class StageResult(Protocol):
 
 
 class SkeletonSource(Protocol):
-    """What branch and bound needs of the top-k generator."""
+    """What branch and bound needs of the top-k generator.
+
+    Optional, used when present: `solved(names)` hears of each feasible
+    skeleton; `lower_bound()` is a proved bound on the symbolic cost of every
+    skeleton not yet drawn (needed when the source does not draw skeletons
+    in non-decreasing cost, as one that learns from failures does)."""
 
     def __iter__(self): ...
 
@@ -121,15 +129,17 @@ def branch_and_bound(
     is_geometric: Callable[[Any], bool] = lambda op: True,
     on_event: Callable[[Event], None] | None = None,
     clock: Callable[[], float] = time.perf_counter,
+    learn: Callable[[Any], None] | None = None,
 ) -> BnBResult:
     """Search skeletons best-first with staged NLP bounds; see the module docstring.
 
     `skeletons` yields plans with `.operators` (each with `.name`) and `.cost`.
     `is_geometric(op)` tells which actions end a keyframe (prefixes worth testing).
     `evaluate(ops, stage, warm)` solves one stage; `warm` is the result of an earlier
-    stage (or of a prefix's keyframes), passed through untouched.
+    stage (or of a prefix's keyframes), passed through untouched. `learn(result)`
+    hears of every stage that failed (what geometry found in the way).
     """
-    search = _Search(skeletons, evaluate, options, is_geometric, on_event, clock)
+    search = _Search(skeletons, evaluate, options, is_geometric, on_event, clock, learn)
     return search.run()
 
 
@@ -162,8 +172,9 @@ class _Trial:
 class _Search:
     """The state of one branch and bound: incumbent, records, statistics."""
 
-    def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock):
+    def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock, learn):
         self.skeletons, self.evaluate, self.options = skeletons, evaluate, options
+        self.learn = learn or (lambda result: None)
         self.is_geometric, self.clock = is_geometric, clock
         self.emit = on_event or (lambda event: None)
         self.w = options.symbolic_weight
@@ -219,13 +230,21 @@ class _Search:
         return trial
 
     def _cannot_beat_incumbent(self, trial: _Trial) -> bool:
-        """Every skeleton from here on is at least this expensive: the incumbent is optimal."""
+        """This skeleton and every one not drawn yet are at least this expensive: the
+        incumbent is optimal."""
         if self.incumbent is None or trial.proved_bound < self.incumbent.objective - TIE:
+            return False
+        if self.w * self._undrawn_bound(trial) < self.incumbent.objective - TIE:
             return False
         self.records.append(SkeletonRecord(
             trial.rank, trial.names, trial.symbolic, "not reached", trial.proved_bound,
             "proved", None, None, None, 0.0, "cannot beat the incumbent (symbolic bound)"))
         return True
+
+    def _undrawn_bound(self, trial: _Trial) -> float:
+        """A proved bound on the symbolic cost of the skeletons not drawn yet."""
+        bound = getattr(self.skeletons, "lower_bound", None)
+        return bound() if bound is not None else trial.symbolic
 
     def _pruned_before_nlp(self, trial: _Trial) -> bool:
         """Pruned by an argument that holds whatever the geometry.
@@ -284,6 +303,7 @@ class _Search:
 
     def _stage_failed(self, trial: _Trial, stage: str, result) -> None:
         trial.outcome = "infeasible"
+        self.learn(result)
         trial.reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
         if not getattr(result, "proved", False) or result.status == "limit":
             self.all_proved_infeasible = False
@@ -313,6 +333,9 @@ class _Search:
         total = None
         if trial.outcome == "solved" and trial.path_result is not None:
             total = trial.nlp_cost + self.w * trial.symbolic
+            solved = getattr(self.skeletons, "solved", None)
+            if solved is not None:
+                solved(trial.names)
             if self.incumbent is None or total < self.incumbent.objective:
                 self.incumbent = _Incumbent(total, trial.path_result, trial.ops, trial.symbolic)
                 self.improvements.append((self.elapsed(), total))

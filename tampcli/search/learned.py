@@ -18,14 +18,18 @@ skeletons follow, each drawn once. `lower_bound()` is proved on symbolic
 cost whatever was learned: the cheapest skeleton of the *plain* task not
 drawn yet.
 
-A skeleton made of a solved one plus more actions is skipped (counted in
-`stats["superseded"]`): the extra actions change nothing the solved one
-needed, and cost more.
+Actions that serve nothing are not worth an NLP: a skeleton made of a
+solved one plus more actions ("superseded": it can only cost more), or of
+an evaluated one that already meets everything learned plus more actions
+("redundant": the extras are symbolically useless given what is known), is
+deferred until every other skeleton has been drawn. Deferred is not lost:
+the bound counts them as not drawn.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import heapq
 import math
 from collections import deque
 from collections.abc import Callable, Iterator
@@ -86,14 +90,19 @@ class LearningSource:
         self.loopless = loopless
         self._by_name = {op.name: op for op in task.operators}
         self.blockers: frozenset[Blocker] = frozenset()
+        self._compiled, self._compiled_ops = task, self._by_name
         self._plain = make_topk(task)
         self._plain_queue: deque = deque()  # plain plans pulled for the bound, not yet drawn
         self._plain_done = False
         self._learned = None  # the compiled task's iterator while it has skeletons
-        self._drawn: set[tuple[str, ...]] = set()
+        self._drawn: set[tuple[str, ...]] = set()  # given to branch and bound
+        self._considered: set[tuple[str, ...]] = set()  # drawn or deferred
+        self._deferred: list = []  # heap of (cost, order, plan): redundant given what is known
+        self._evaluated: list[tuple[str, ...]] = []
+        self._fits: dict[tuple[str, ...], bool] = {}  # evaluated plan -> valid in _compiled
         self._solved: list[tuple[str, ...]] = []
         self._forbidden: list[tuple[str, ...]] = []
-        self.stats = {"learned": 0, "restarts": 0, "superseded": 0, "from_learned": 0}
+        self.stats = {"learned": 0, "superseded": 0, "redundant": 0, "from_learned": 0}
 
     # ------------------------------------------------------------ what bnb tells it
 
@@ -103,8 +112,10 @@ class LearningSource:
             return False
         self.blockers = self.blockers | {blocker}
         self.stats["learned"] += 1
-        self.stats["restarts"] += 1
-        self._learned = self._make(compile_task(self.task, self.blockers, self._moves))
+        self._compiled = compile_task(self.task, self.blockers, self._moves)
+        self._compiled_ops = {op.name: op for op in self._compiled.operators}
+        self._fits.clear()
+        self._learned = self._make(self._compiled)
         for names in self._forbidden:
             self._learned.forbid_prefix(names)
         return True
@@ -120,6 +131,8 @@ class LearningSource:
             self._learned.forbid_prefix(names)
         self._plain_queue = deque(p for p in self._plain_queue
                                   if p.names[:len(names)] != tuple(names))
+        self._deferred = [d for d in self._deferred if d[2].names[:len(names)] != tuple(names)]
+        heapq.heapify(self._deferred)
 
     # ------------------------------------------------------------ what it gives
 
@@ -128,33 +141,69 @@ class LearningSource:
         return getattr(self._plain, "status", "running")
 
     def lower_bound(self) -> float:
-        """Proved: no skeleton not yet drawn costs less (symbolic cost)."""
-        while not self._plain_queue or self._plain_queue[0].names in self._drawn:
-            if self._plain_queue:
-                self._plain_queue.popleft()
-                continue
+        """Proved: no skeleton not yet drawn costs less (symbolic cost). Deferred
+        skeletons count as not drawn: they may still come."""
+        while self._plain_queue and self._plain_queue[0].names in self._drawn:
+            self._plain_queue.popleft()
+        while not self._plain_queue:
             if not self._pull_plain():
-                return math.inf
-        return self._plain_queue[0].cost
+                break
+            while self._plain_queue and self._plain_queue[0].names in self._drawn:
+                self._plain_queue.popleft()
+        candidates = [self._plain_queue[0].cost] if self._plain_queue else []
+        candidates += [cost for cost, _, _ in self._deferred[:1]]
+        return min(candidates, default=math.inf)
 
     def __iter__(self) -> Iterator:
         return self
 
     def __next__(self):
         while True:
-            plan = self._next_learned()
+            plan = self._next_learned() or self._next_plain()
             if plan is None:
-                plan = self._next_plain()
-            if plan is None:
-                raise StopIteration
+                if not self._deferred:
+                    raise StopIteration
+                plan = heapq.heappop(self._deferred)[2]
+                return self._draw(plan)
             names = plan.names
-            if names in self._drawn:
+            if names in self._considered:
                 continue
-            self._drawn.add(names)
-            if any(_is_subsequence(s, names) for s in self._solved):
-                self.stats["superseded"] += 1
-                continue
-            return plan
+            self._considered.add(names)
+            why = self._why_defer(names)
+            if why is None:
+                return self._draw(plan)
+            self.stats[why] += 1
+            heapq.heappush(self._deferred, (plan.cost, len(self._considered), plan))
+
+    def _draw(self, plan):
+        self._drawn.add(plan.names)
+        self._evaluated.append(plan.names)
+        return plan
+
+    def _why_defer(self, names: tuple[str, ...]) -> str | None:
+        """"superseded": a solved skeleton plus more actions (it can only cost more);
+        "redundant": an evaluated skeleton that already meets everything learned,
+        plus actions; both come last, after every other skeleton."""
+        if any(_is_subsequence(s, names) for s in self._solved):
+            return "superseded"
+        for other in self._evaluated:
+            if len(other) < len(names) and _is_subsequence(other, names) \
+                    and self._meets_learned(other):
+                return "redundant"
+        return None
+
+    def _meets_learned(self, names: tuple[str, ...]) -> bool:
+        """The plan is valid in the compiled task: it moves every known blocker first."""
+        if names not in self._fits:
+            task, state, ok = self._compiled, self._compiled.init, True
+            for name in names:
+                op = self._compiled_ops.get(name)
+                if op is None or not op.pre.holds(task.closure(state)):
+                    ok = False
+                    break
+                state = task.apply(state, op)
+            self._fits[names] = ok and task.is_goal(state)
+        return self._fits[names]
 
     def _next_learned(self):
         while self._learned is not None:
@@ -164,7 +213,7 @@ class LearningSource:
                 self._learned = None
                 return None
             plan = self._plain_version(plan)
-            if plan.names not in self._drawn and not (self.loopless and self._loops(plan)):
+            if plan.names not in self._considered and not (self.loopless and self._loops(plan)):
                 self.stats["from_learned"] += 1
                 return plan
         return None
@@ -187,7 +236,7 @@ class LearningSource:
     def _next_plain(self):
         while self._plain_queue or self._pull_plain():
             plan = self._plain_queue.popleft()
-            if plan.names not in self._drawn:
+            if plan.names not in self._considered:
                 return plan
         return None
 

@@ -114,15 +114,30 @@ def test_lower_bound_is_the_cheapest_undrawn_plain_skeleton():
             break
 
 
-def test_a_solved_skeleton_supersedes_its_supersequences():
+def test_a_solved_skeleton_defers_its_supersequences_to_the_end():
     task, _ = pen(1)
     src = source(task)
     first = next(src)
     assert first.names == ("(pick a floor)", "(place a goal)")
     src.solved(first.names)
-    rest = list(src)
-    assert all(not _contains(p.names, first.names) for p in rest)
-    assert src.stats["superseded"] > 0
+    rest = [p.names for p in src]
+    flags = [_contains(names, first.names) for names in rest]
+    assert src.stats["superseded"] == sum(flags) > 0
+    assert flags == sorted(flags)  # every superseded one after every other
+    assert sorted(rest + [first.names]) == sorted(p.names for p in TopK(task, loopless=True))
+
+
+def test_what_meets_every_finding_defers_its_padded_copies():
+    task, _ = pen(1)
+    src = source(task)
+    assert next(src).names == ("(pick a floor)", "(place a goal)")
+    src.learn(Blocker("b1", "(place a goal)"))
+    clearing = next(src)
+    assert clearing.names[0] == "(pick b1 goal)" and len(clearing.names) == 4
+    later = [p.names for p in src]
+    padded = [len(n) > 4 and _contains(n, clearing.names) for n in later]
+    assert src.stats["redundant"] == sum(padded) > 0
+    assert padded == sorted(padded)  # after every other skeleton
 
 
 def test_forbidden_prefixes_stay_forbidden_after_a_restart():

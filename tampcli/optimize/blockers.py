@@ -1,0 +1,39 @@
+"""Which body blocked which action: a failed NLP's worst row, read back as a Blocker.
+
+The rows of the NLPs are labelled with the action they serve (the final
+and keyframe NLPs: `(place a goal): overlaps b`; the path NLP: `motion 2
+before (pick a floor): collision panda_hand vs b`). When the worst row left
+violated names a movable body that the action did not handle itself, that
+body stood in the way: branch and bound passes the finding to the skeleton
+source (search/learned.py), which orders next the skeletons that move it
+first. A wrong guess costs order, never a solution: the source falls back to
+the plain enumeration.
+"""
+
+from __future__ import annotations
+
+import re
+
+from tampcli.search.learned import Blocker
+
+_ACTION = re.compile(r"(\([^()]*\))")
+_OVERLAP = re.compile(r": overlaps (?P<b>[^\s:]+)")
+_COLLISION = re.compile(r": collision (?P<a>[^\s:]+) vs (?P<b>[^\s:]+)")
+
+
+def blocker_of(worst: str | None, movable: frozenset[str]) -> Blocker | None:
+    """The Blocker a worst-row message names, or None (not an obstruction by a movable body)."""
+    if not worst:
+        return None
+    action = _ACTION.search(worst)
+    if action is None:
+        return None
+    name = action.group(1)
+    args = set(name.strip("()").split()[1:])
+    found = _OVERLAP.search(worst) or _COLLISION.search(worst)
+    if found is None:
+        return None
+    for body in (found.group("b"), found.groupdict().get("a")):
+        if body in movable and body not in args:
+            return Blocker(body, name)
+    return None

@@ -1,0 +1,29 @@
+"""Blockers read from the NLPs' worst-row messages."""
+
+from tampcli.optimize.blockers import blocker_of
+from tampcli.search.learned import Blocker
+
+MOVABLE = frozenset({"a", "b", "c"})
+
+
+def test_an_overlap_at_a_placement_blames_the_other_body():
+    assert blocker_of("placements: (place a goal): overlaps b by 1.2 cm", MOVABLE) == \
+        Blocker("b", "(place a goal)")
+
+
+def test_a_collision_on_the_way_to_an_action_blames_the_body_in_it():
+    worst = "motion 2 before (pick a floor): collision panda_hand vs c (margin 1 cm) by 0.4 cm"
+    assert blocker_of(worst, MOVABLE) == Blocker("c", "(pick a floor)")
+
+
+def test_a_carried_object_hitting_a_movable_body():
+    worst = "motion 1 before (place a goal): collision a vs b (margin 1 cm) by 2.0 cm"
+    assert blocker_of(worst, MOVABLE) == Blocker("b", "(place a goal)")
+
+
+def test_fixed_bodies_and_the_actions_own_objects_are_no_blockers():
+    assert blocker_of("(place a goal): overlaps wall by 1.0 cm", MOVABLE) is None
+    assert blocker_of("motion 0 before (pick a floor): collision panda_hand vs a by 1 cm",
+                      MOVABLE) is None
+    assert blocker_of("(place a goal): footprint outside region goal by 1 cm", MOVABLE) is None
+    assert blocker_of(None, MOVABLE) is None
