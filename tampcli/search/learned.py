@@ -38,6 +38,11 @@ from dataclasses import dataclass
 from tampcli.task.task import Operator, Task
 
 MOVED = "(tampcli-moved {})"  # the fact a learned precondition asks for
+# Deferred skeletons in a row before the cheapest deferred one is drawn anyway: past
+# the few skeletons that clear an obstruction, a ranked enumeration yields mostly
+# padded copies of them (tens of thousands a minute on a pen with three blockers,
+# measured), and branch and bound should not wait for the enumeration to get past them.
+MAX_DEFERRED_IN_A_ROW = 100
 
 
 @dataclass(frozen=True)
@@ -158,13 +163,15 @@ class LearningSource:
         return self
 
     def __next__(self):
+        in_a_row = 0
         while True:
-            plan = self._next_learned() or self._next_plain()
+            plan = None
+            if in_a_row < MAX_DEFERRED_IN_A_ROW:
+                plan = self._next_learned() or self._next_plain()
             if plan is None:
                 if not self._deferred:
                     raise StopIteration
-                plan = heapq.heappop(self._deferred)[2]
-                return self._draw(plan)
+                return self._draw(heapq.heappop(self._deferred)[2])
             names = plan.names
             if names in self._considered:
                 continue
@@ -173,6 +180,7 @@ class LearningSource:
             if why is None:
                 return self._draw(plan)
             self.stats[why] += 1
+            in_a_row += 1
             heapq.heappush(self._deferred, (plan.cost, len(self._considered), plan))
 
     def _draw(self, plan):
