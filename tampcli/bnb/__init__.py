@@ -55,6 +55,8 @@ class BnBOptions:
         whose optimality cannot be improved by a cheaper skeleton.
     prefix_pruning: when a skeleton's keyframe problem fails, find its shortest failing
         prefix and forbid every skeleton that starts with it.
+    first: stop at the first feasible skeleton (its solution verified), without
+        looking for a better one.
     """
 
     max_skeletons: int = 20
@@ -62,6 +64,7 @@ class BnBOptions:
     symbolic_weight: float = 0.1
     anytime: bool = False
     prefix_pruning: bool = True
+    first: bool = False
 
     def __post_init__(self):
         require_int(self.max_skeletons, "max_skeletons", 1)
@@ -203,6 +206,9 @@ class _Search:
                 break
             if self.rank >= self.options.max_skeletons:
                 stop = "skeletons"
+                break
+            if self.options.first and self.incumbent is not None:
+                stop = "first"
                 break
             plan = next(iterator, None)
             if plan is None:

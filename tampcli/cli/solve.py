@@ -45,6 +45,8 @@ FLAGS = (
     Flag("--waypoints", "optimize", "waypoints", int, "T", "waypoints per motion phase"),
     Flag("--anytime", "bnb", "anytime", None, None,
          "keep improving until a limit; report each improvement"),
+    Flag("--first", "bnb", "first", None, None,
+         "stop at the first verified solution (no search for a better skeleton)"),
     Flag("--seed", "optimize", "seed", int, None, "random seed"),
 )
 

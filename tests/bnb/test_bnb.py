@@ -164,3 +164,41 @@ def test_skeleton_differing_only_in_symbolic_actions_is_not_optimized_again():
     assert not any(names == ("move", "place", "cook") for names, _ in calls)
     # A skeleton with other geometric actions is still evaluated.
     assert any(names == ("move", "place", "cook", "move2") for names, _ in calls)
+
+
+def test_first_stops_at_the_first_feasible_skeleton():
+    source = Source([(("a",), 1.0), (("b",), 2.0), (("c",), 3.0)])
+    table = {(("a",), "final"): R("infeasible", worst_constraint="x")}
+    result = branch_and_bound(source, table_evaluator(table), BnBOptions(first=True))
+    assert result.status == "solved" and [op.name for op in result.best_plan] == ["b"]
+    assert result.stats["stop"] == "first" and source.drawn == [("a",), ("b",)]
+
+
+def test_every_failed_stage_reaches_the_learner():
+    source = Source([(("a",), 1.0), (("b",), 2.0)])
+    table = {(("a",), "keyframes"): R("infeasible", worst_constraint="(a): overlaps z")}
+    heard = []
+    branch_and_bound(source, table_evaluator(table), BnBOptions(prefix_pruning=False),
+                     learn=lambda result: heard.append(result.worst_constraint))
+    assert heard == ["(a): overlaps z"]
+
+
+class ReorderingSource(Source):
+    """Draws a dear skeleton first; its proved bound covers the cheap one still to come."""
+
+    def lower_bound(self):
+        left = [p.cost for p in self.plans if tuple(op.name for op in p.operators)
+                not in self.drawn]
+        return min(left, default=float("inf"))
+
+    def solved(self, names):
+        self.solved_names = names
+
+
+def test_optimality_waits_for_the_sources_bound_when_skeletons_come_out_of_order():
+    # After "dear" (objective 5), "dearer" alone would look like proof of optimality.
+    source = ReorderingSource([(("dear",), 5.0), (("dearer",), 6.0), (("cheap",), 1.0)])
+    table = {(("dear",), "path"): R("solved", 0.0), (("cheap",), "path"): R("solved", 0.0)}
+    result = branch_and_bound(source, table_evaluator(table), BnBOptions(symbolic_weight=1.0))
+    assert [op.name for op in result.best_plan] == ["cheap"]
+    assert source.drawn[-1] == ("cheap",) and source.solved_names == ("cheap",)
