@@ -74,6 +74,14 @@ class Solution:
     def solved(self) -> bool:
         return self.status == "solved"
 
+    @property
+    def gap(self) -> float | None:
+        """(objective - lower_bound) / |objective|: how far the proved bound leaves the
+        answer from a proved optimum (0: proved optimal)."""
+        if self.objective is None or self.lower_bound is None:
+            return None
+        return (self.objective - self.lower_bound) / max(abs(self.objective), 1e-12)
+
 
 def to_dict(solution: Solution) -> dict[str, Any]:
     return {
@@ -90,6 +98,7 @@ def to_dict(solution: Solution) -> dict[str, Any]:
         "objective": _num(solution.objective),
         "symbolic_weight": _num(solution.symbolic_weight),
         "lower_bound": _num(solution.lower_bound),
+        "gap": _num(solution.gap),
         "robot": solution.robot,
         "trajectory": [[float(v) for v in q] for q in solution.trajectory],
         "phases": [

@@ -23,7 +23,7 @@ def planar(trajectory, phases, poses) -> dict:
         "version": 1, "domain": "d.pddl", "problem": "p.pddl", "scene": "p.scene.toml",
         "modes": None, "status": "solved", "reason": None, "plan": list(PLAN),
         "symbolic_cost": 2.0, "cost": 1.0, "objective": 3.0, "symbolic_weight": 1.0,
-        "lower_bound": 1.0,
+        "lower_bound": 1.0, "gap": (3.0 - 1.0) / 3.0,
         "robot": {"model": "planar", "joints": ["x", "y"], "tool_link": "planar_body"},
         "trajectory": [list(map(float, q)) for q in trajectory],
         "phases": [{"action": a, "start": s, "end": e, "attached": h} for a, s, e, h in phases],

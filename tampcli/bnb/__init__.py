@@ -193,6 +193,11 @@ class _Search:
         self.failures: list[tuple[int, tuple[str, ...], str, str]] = []  # rank, plan, stage, why
         self.deepest_feasible: tuple[str, ...] = ()
         self.all_proved_infeasible = True
+        # Proved bounds (w * symbolic cost) of drawn skeletons that no proof excludes:
+        # solved ones that lost (their NLP optimum is local), infeasible ones whose
+        # failure is not proved, heuristic prunes. Each may hide a better solution.
+        self.unproved: list[float] = []
+        self.unproved_ranks: set[int] = set()
         self.rank = 0
 
     def elapsed(self) -> float:
@@ -269,14 +274,25 @@ class _Search:
             self.evaluated[motion] = trial.rank
             return False
         self.stats["skeletons_pruned"] += 1
-        why = (f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
-               if twin is not None else f"shares the infeasible prefix {' '.join(blocked)}")
+        if twin is not None:
+            why = f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
+            proved = twin not in self.unproved_ranks
+        else:
+            why = f"shares the infeasible prefix {' '.join(blocked)}"
+            proved = bool(getattr(self.tree.get(blocked), "proved", False))
+        if not proved:
+            self._unproved(trial)
         self.records.append(SkeletonRecord(trial.rank, trial.names, trial.symbolic, "pruned",
-                                           trial.proved_bound, "proved", None, None, None,
-                                           0.0, why))
+                                           trial.proved_bound,
+                                           "proved" if proved else "heuristic", None, None,
+                                           None, 0.0, why))
         self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, outcome="pruned",
                         message=why))
         return True
+
+    def _unproved(self, trial: _Trial) -> None:
+        self.unproved.append(trial.proved_bound)
+        self.unproved_ranks.add(trial.rank)
 
     def _stage(self, ops, stage: str, warm):
         t0 = self.clock()
@@ -313,6 +329,7 @@ class _Search:
         trial.reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
         if not getattr(result, "proved", False) or result.status == "limit":
             self.all_proved_infeasible = False
+            self._unproved(trial)
         if stage == "keyframes" and self.options.prefix_pruning \
                 and result.status == "infeasible":
             prefix = shortest_failing_prefix(trial.ops, trial.names, self.tree, self._stage,
@@ -330,6 +347,7 @@ class _Search:
             trial.outcome = "pruned"
             trial.reason = (f"keyframe bound {trial.heuristic_bound:.4g} >= incumbent "
                             f"{self.incumbent.objective:.4g} (heuristic)")
+            self._unproved(trial)
             return True
         if len(trial.names) > len(self.deepest_feasible):
             self.deepest_feasible = trial.names
@@ -342,7 +360,11 @@ class _Search:
             solved = getattr(self.skeletons, "solved", None)
             if solved is not None:
                 solved(trial.names)
-            if self.incumbent is None or total < self.incumbent.objective:
+            if self.incumbent is not None and total >= self.incumbent.objective:
+                self._unproved(trial)
+            else:
+                if self.incumbent is not None:
+                    self.unproved.append(self.w * self.incumbent.symbolic)
                 self.incumbent = _Incumbent(total, trial.path_result, trial.ops, trial.symbolic)
                 self.improvements.append((self.elapsed(), total))
                 self.emit(Event("incumbent", trial.rank, trial.names, trial.symbolic,
@@ -362,23 +384,50 @@ class _Search:
                         outcome=trial.outcome, cost=trial.nlp_cost, bound=total,
                         seconds=self.elapsed(), message=trial.reason))
 
+    def _proved_bound(self, stop: str) -> float | None:
+        """No solution has a lower objective: a trajectory cost is >= 0, so each
+        skeleton's objective is >= w * its symbolic cost; the minimum of that over
+        the incumbent, the skeletons no proof excluded, and those not drawn."""
+        candidates = list(self.unproved)
+        if self.incumbent is not None:
+            candidates.append(self.w * self.incumbent.symbolic)
+        if stop != "exhausted" and self.records:
+            bound = getattr(self.skeletons, "lower_bound", None)
+            undrawn = bound() if bound is not None else self.records[-1].symbolic_cost
+            candidates.append(self.w * undrawn)
+        if not candidates:
+            return None
+        low = min(candidates)
+        return low if self.incumbent is None else min(low, self.incumbent.objective)
+
+    def _stop_label(self, stop: str, proved_lb: float | None) -> str:
+        if stop != "optimal":
+            return {"time": "time limit", "skeletons": "skeleton limit",
+                    "exhausted": "every skeleton tried", "first": "first solution"}[stop]
+        if proved_lb is not None and proved_lb >= self.incumbent.objective - TIE:
+            return "optimal (proved)"
+        prunes = sum(b < self.incumbent.objective - TIE for b in self.unproved)
+        return f"best of the evaluated skeletons ({prunes} heuristic prunes)"
+
     def _result(self, stop: str) -> BnBResult:
-        # A trajectory cost is >= 0 and skeletons come in non-decreasing symbolic
-        # cost, so no solution has an objective below w * (the first symbolic cost).
-        proved_lb = self.w * self.records[0].symbolic_cost if self.records else None
-        self.stats["stop"] = stop
+        proved_lb = self._proved_bound(stop)
+        self.stats["stop"] = self._stop_label(stop, proved_lb)
+        self.stats["heuristic_prunes"] = (
+            sum(b < self.incumbent.objective - TIE for b in self.unproved)
+            if self.incumbent is not None else len(self.unproved))
         self.stats["seconds"] = self.elapsed()
         # When the first solution came: what a user waits for before `--anytime` or the
         # search for a better skeleton goes on.
         self.stats["first_solution_seconds"] = \
             self.improvements[0][0] if self.improvements else None
-        self.emit(Event("stop", self.rank, message=stop, seconds=self.elapsed()))
+        self.emit(Event("stop", self.rank, message=self.stats["stop"], seconds=self.elapsed()))
         best = self.incumbent
         if best is not None:
-            # "optimal" here means: no skeleton not yet drawn can beat the incumbent. Its
-            # own trajectory is a local optimum of its NLP, which we do not claim.
+            # Proved optimal only when the proved bound meets the objective: the
+            # incumbent's own trajectory is a local optimum of its NLP.
             return BnBResult("solved", None, best.result, best.plan, best.symbolic,
-                             best.objective, proved_lb, stop == "optimal", self.records,
+                             best.objective, proved_lb,
+                             self.stats["stop"] == "optimal (proved)", self.records,
                              self.stats, self.improvements)
         status = "limit"
         if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):

@@ -67,10 +67,27 @@ def test_first_feasible_skeleton_wins_when_later_cannot_beat_it():
     res = branch_and_bound(src, table_evaluator({}), BnBOptions(symbolic_weight=0.1))
     assert res.status == "solved"
     assert [op.name for op in res.best_plan] == ["a"]
-    # objective 1 + 0.1 = 1.1 < 0.1 * 100: the second skeleton is never optimized.
-    assert res.optimal
+    # objective 1 + 0.1 = 1.1 < 0.1 * 100: the second skeleton is never optimized. The
+    # trajectory's NLP optimum is local, so the proved bound stays w * 1: not proved optimal.
+    assert not res.optimal
+    assert res.stats["stop"] == "best of the evaluated skeletons (0 heuristic prunes)"
     assert res.stats["skeletons_optimized"] == 1
     assert res.lower_bound == pytest.approx(0.1)
+
+
+def test_the_bound_counts_what_a_local_failure_left_unproved():
+    src = Source([(("a",), 1), (("b",), 3), (("c",), 100)])
+    ev = table_evaluator({(("a",), "final"): R("infeasible", worst_constraint="local")})
+    res = branch_and_bound(src, ev, BnBOptions(symbolic_weight=0.1))
+    assert [op.name for op in res.best_plan] == ["b"]
+    assert res.lower_bound == pytest.approx(0.1)  # a's failure is not proved
+    assert res.stats["stop"] == "best of the evaluated skeletons (1 heuristic prunes)"
+    proved = table_evaluator({(("a",), "final"): R("infeasible", worst_constraint="far",
+                                                    proved=True)})
+    res = branch_and_bound(Source([(("a",), 1), (("b",), 3), (("c",), 100)]), proved,
+                           BnBOptions(symbolic_weight=0.1))
+    assert res.lower_bound == pytest.approx(0.3)
+    assert res.lower_bound <= res.best_objective
 
 
 def test_infeasible_cheapest_skeleton_is_skipped_and_recorded():
@@ -141,7 +158,7 @@ def test_time_limit_with_fake_clock():
     src = Source([((f"a{i}",), i) for i in range(10)])
     ev = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(10)})
     res = branch_and_bound(src, ev, BnBOptions(time_limit=5), clock=lambda: next(ticks))
-    assert res.status == "limit" and res.stats["stop"] == "time"
+    assert res.status == "limit" and res.stats["stop"] == "time limit"
 
 
 def test_options_are_validated():
@@ -171,7 +188,7 @@ def test_first_stops_at_the_first_feasible_skeleton():
     table = {(("a",), "final"): R("infeasible", worst_constraint="x")}
     result = branch_and_bound(source, table_evaluator(table), BnBOptions(first=True))
     assert result.status == "solved" and [op.name for op in result.best_plan] == ["b"]
-    assert result.stats["stop"] == "first" and source.drawn == [("a",), ("b",)]
+    assert result.stats["stop"] == "first solution" and source.drawn == [("a",), ("b",)]
 
 
 def test_every_failed_stage_reaches_the_learner():
