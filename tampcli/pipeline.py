@@ -276,6 +276,9 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
     timers.add("optimize", result.stats.get("optimize_seconds", 0.0))
     timers.add("bnb", time.perf_counter() - bnb_start)
+    first = result.stats.get("first_solution_seconds")
+    if first is not None:  # what a user waits: from the solve's start (parsing included)
+        result.stats["first_solution_since_start"] = round(bnb_start - timers.started + first, 4)
     return _solution(inputs, geometry.world, options, result, _stats(timers, result.stats))
 
 
