@@ -145,7 +145,7 @@ def replay_physics(inputs, mode_kind=None, speed: float | None = None,
     with World(inputs.scene) as world:
         replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind, speed=speed,
                         pause=settings.pause)
-        run = _Run(world, replay, inputs, settings)
+        run = _Run(world, replay, inputs, settings, mode_kind or (lambda action: None))
         run.play()
         return run.report()
 
@@ -153,8 +153,8 @@ def replay_physics(inputs, mode_kind=None, speed: float | None = None,
 class _Run:
     """One replay's simulation state: the clock, the tracking error, phase drifts."""
 
-    def __init__(self, world, replay: Replay, inputs, settings: PhysicsSettings):
-        self.replay, self.settings = replay, settings
+    def __init__(self, world, replay: Replay, inputs, settings: PhysicsSettings, mode_kind):
+        self.replay, self.settings, self.mode_kind = replay, settings, mode_kind
         self.solution = inputs.solution
         model = inputs.solution.robot.get("model")
         self.force = settings.planar_force if model == "planar" else settings.arm_force
@@ -190,55 +190,86 @@ class _Run:
                 return
             self._step(q, track=False)
 
-    def _switch(self, held: str | None, q) -> None:
+    def _switch(self, held: str | None, q, grip: bool) -> None:
+        """Let go of what is held, then take `held` (fingers closing on it when `grip`)."""
         self._arrive(q)
-        if self.sim.held is not None:
-            self.sim.release()
+        released = self.sim.held
+        if released is not None:
+            # the retreat's first move may still pass into it (play's exemptions)
+            self.sim.release(heed=False)
             self.sim.open_fingers()
             self._wait(q, self.settings.settle_after_place)
         if held is not None:
-            self.sim.close_fingers_on(held)
-            self._wait(q, self.settings.grip_seconds)
+            if grip:
+                self.sim.close_fingers_on(held)
+                self._wait(q, self.settings.grip_seconds)
             self.sim.grasp(held, self.settings.grasp_force)
 
-    def _approaches(self, items, ends) -> dict[int, str]:
-        """Item index -> the object grasped at the end of the move it is: the last
-        segment of each approach to a grasp (and the pause after it)."""
-        held = [self.replay.state_at(end - 0.5 * item.duration).held
-                for item, end in zip(items, ends, strict=True)]
-        marks = {}
+    def _holding(self, items, ends) -> list[tuple[str | None, bool]]:
+        """Per timeline item: the object tied to the tool, and whether the fingers grip
+        it. A push ties its object too: the planner moves it with the pusher, sliding
+        on its surface, and does not model how a point contact would turn it."""
+        out = []
+        for item, end in zip(items, ends, strict=True):
+            state = self.replay.state_at(end - 0.5 * item.duration)
+            phase = self.solution.phases[item.phase] \
+                if 0 <= item.phase < len(self.solution.phases) else None
+            pushing = phase is not None and item.kind == "move" and phase.action is not None \
+                and phase.attached is not None and self.mode_kind(phase.action) == "push"
+            out.append((phase.attached, False) if pushing else (state.held, True))
+        return out
+
+    def _exempt(self, items, holding) -> dict[int, str]:
+        """Item index -> the object the robot may pass into there, as the planner lets
+        it (optimize/path.py's allowed contacts): the one it takes, in the last move
+        before taking it; the one it let go, until the end of the first move after."""
+        marks: dict[int, str] = {}
         for j in range(1, len(items)):
-            if held[j] is not None and held[j] != held[j - 1]:
+            before, after = holding[j - 1][0], holding[j][0]
+            if after is not None and after != before:
                 i = j - 1
                 while i >= 0 and items[i].kind != "move":
-                    marks[i] = held[j]
+                    marks[i] = after
                     i -= 1
                 if i >= 0:
-                    marks[i] = held[j]
+                    marks[i] = after
+            if before is not None and after != before:
+                i = j
+                while i < len(items) and items[i].kind != "move" and holding[i][0] is None:
+                    marks[i] = before
+                    i += 1
+                if i < len(items) and holding[i][0] is None:
+                    marks[i] = before
         return marks
 
     def play(self) -> None:
         hz = self.settings.hz
         items = self.replay.items
         ends = np.cumsum([item.duration for item in items])
-        approaches = self._approaches(items, ends)
+        holding = self._holding(items, ends)
+        exempt = self._exempt(items, holding)
         for j, item in enumerate(items):
             start = ends[j] - item.duration
-            if j in approaches:
-                self.sim.ignore_robot(approaches[j])
             n = max(1, int(math.ceil(item.duration * hz)))
             for s in range(n):
                 # mid-step samples stay inside this item of the timeline
                 state = self.replay.state_at(start + item.duration * (s + 0.5) / n)
-                if state.held != self.sim.held:
-                    self._switch(state.held, state.q)
+                if s == 0:
+                    if holding[j][0] != self.sim.held:
+                        self._switch(holding[j][0], state.q, holding[j][1])
+                    if j in exempt:
+                        self.sim.ignore_robot(exempt[j])
                 self._step(state.q)
+            if j in exempt and exempt.get(j + 1) != exempt[j] and exempt[j] != self.sim.held:
+                self.sim.heed_robot(exempt[j])
             last_of_phase = j + 1 == len(items) or items[j + 1].phase != item.phase
             if last_of_phase and 0 <= item.phase < len(self.solution.phases):
                 self._record(item.phase)
         final = self.replay.state_at(self.replay.duration)
         if self.sim.held is not None:
-            self._switch(None, final.q)
+            released = self.sim.held
+            self._switch(None, final.q, False)
+            self.sim.heed_robot(released)
         self._wait(final.q, self.settings.settle_final)
 
     def _label(self, k: int) -> str:

@@ -100,10 +100,14 @@ class Dynamics:
         return targets
 
     def ignore_robot(self, name: str) -> None:
-        """`name` and the robot stop colliding until it is released and clear: the
-        contact a grasp is made of, which the planner lets touch or slightly overlap."""
+        """`name` and the robot stop colliding until `heed_robot` (or a grasp and
+        release) hands it back."""
         self._released.discard(name)
         self._collide(name, False)
+
+    def heed_robot(self, name: str) -> None:
+        """`name` collides with the robot again as soon as it is clear of it."""
+        self._released.add(name)
 
     def open_fingers(self) -> None:
         self._finger_target = [self._finger_open] * len(self._fingers)
@@ -127,12 +131,13 @@ class Dynamics:
         self._collide(name, False)
         self._held = name
 
-    def release(self) -> None:
-        """Let go of the held body (if any); it collides with the robot again once clear."""
+    def release(self, heed: bool = True) -> None:
+        """Let go of the held body (if any); it collides with the robot again once clear
+        (with `heed`), else once `heed_robot` says so."""
         if self._constraint is not None:
             self._pb.removeConstraint(self._constraint, physicsClientId=self._client)
             self._constraint = None
-        if self._held is not None:
+        if self._held is not None and heed:
             self._released.add(self._held)
         self._held = None
 
