@@ -1,6 +1,6 @@
 """The physics replay: a solution replayed with PyBullet dynamics, and how far the
 objects end up from where the plan put them. `render --physics` shows it,
-`validate --physics` judges by it (physics_verdict.py); both run this one replay.
+`validate --physics` judges by it (`drift_violations`); both run this one replay.
 
 What is simulated (docs/physics.md states the numbers): the robot's joints
 track the replay's timeline under position control; at a grasp the robot
@@ -110,6 +110,34 @@ class PhysicsReplay:
                                                 for d in o.phases]}
                             for o in self.objects},
                 "max_distance": self.max_distance, "tracking_error": self.tracking_error}
+
+
+@dataclass(frozen=True)
+class DriftViolation:
+    """An object that ended farther from its planned pose than a tolerance allows."""
+
+    drift: ObjectDrift
+    first: PhaseDrift | None  # the phase it first exceeded it at; None: in the final settle
+    max_distance: float
+    max_angle_deg: float
+
+    def describe(self) -> str:
+        d = self.drift
+        where = (f"first beyond at the end of phase {self.first.phase}: {self.first.label}"
+                 if self.first is not None else "first beyond after the last phase, while "
+                 "everything settled")
+        return (f"physics: {d.name} ends {d.distance:.3f} m and {d.angle_deg:.1f} deg from "
+                f"its planned pose (tolerance {self.max_distance:g} m, "
+                f"{self.max_angle_deg:g} deg); {where}")
+
+
+def drift_violations(replay: PhysicsReplay, max_distance: float,
+                     max_angle_deg: float) -> tuple[DriftViolation, ...]:
+    """The objects whose final pose is beyond either tolerance, in scene order."""
+    return tuple(DriftViolation(o, o.first_beyond(max_distance, max_angle_deg), max_distance,
+                                max_angle_deg)
+                 for o in replay.objects
+                 if o.distance > max_distance or o.angle_deg > max_angle_deg)
 
 
 def object_mass(body, density: float) -> float:
