@@ -85,6 +85,14 @@ class ObjectDrift:
 
 
 @dataclass(frozen=True)
+class Grip:
+    """A grasp as simulated: the object and the gap the closed fingers left (m)."""
+
+    name: str
+    opening: float
+
+
+@dataclass(frozen=True)
 class PhysicsReplay:
     """The outcome of one physics replay."""
 
@@ -93,6 +101,7 @@ class PhysicsReplay:
     hz: float
     objects: tuple[ObjectDrift, ...]
     tracking_error: float  # largest joint error seen while moving (rad, or m for planar)
+    grips: tuple[Grip, ...] = ()  # each finger grasp, in order
     settings: PhysicsSettings = field(default_factory=PhysicsSettings)
 
     @property
@@ -109,7 +118,8 @@ class PhysicsReplay:
                                                  "angle_deg": d.angle_deg}
                                                 for d in o.phases]}
                             for o in self.objects},
-                "max_distance": self.max_distance, "tracking_error": self.tracking_error}
+                "max_distance": self.max_distance, "tracking_error": self.tracking_error,
+                "grips": [{"object": g.name, "opening": g.opening} for g in self.grips]}
 
 
 @dataclass(frozen=True)
@@ -197,6 +207,7 @@ class _Run:
         self.steps = 0
         self.tracking = 0.0
         self.phase_drifts: dict[str, list[PhaseDrift]] = {name: [] for name in first.poses}
+        self.grips: list[Grip] = []
 
     def _step(self, q, track: bool = True) -> None:
         self.sim.drive(q, self.force, self.settings.finger_force, self.settings.gain)
@@ -228,9 +239,9 @@ class _Run:
             self.sim.open_fingers()
             self._wait(q, self.settings.settle_after_place)
         if held is not None:
-            if grip:
-                self.sim.close_fingers_on(held)
+            if grip and self.sim.close_fingers_on(held):
                 self._wait(q, self.settings.grip_seconds)
+                self.grips.append(Grip(held, float(np.sum(self.sim.finger_positions()))))
             self.sim.grasp(held, self.settings.grasp_force)
 
     def _holding(self, items, ends) -> list[tuple[str | None, bool]]:
@@ -327,7 +338,7 @@ class _Run:
                 tuple(self.phase_drifts.get(name, ()))))
         hz = self.settings.hz
         return PhysicsReplay(self.steps / hz, self.steps, hz, tuple(objects), self.tracking,
-                             self.settings)
+                             tuple(self.grips), self.settings)
 
 
 def _drift(planned: np.ndarray, simulated: np.ndarray) -> tuple[float, float]:
