@@ -90,6 +90,9 @@ def main() -> None:
         "| --- | ---: | ---: | --- | --- | ---: | ---: | ---: |",
         *rows,
         "",
+        "An invalid row is a plan that physics refuses; the expected ones are listed in "
+        "tests/render/test_physics_validate.py (`UNSTABLE`, with why).",
+        "",
     ]
     OUT.write_text("\n".join(lines))
     print(f"wrote {OUT}")
