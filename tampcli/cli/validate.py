@@ -63,12 +63,16 @@ def run(args, ui) -> int:
                            "reason": v, "text": v} for v in found)
     physics = None
     if args.physics:
-        physics, drifted = _physics(args)
+        physics, drifted, overlaps = _physics(args)
         violations.extend({"kind": "physics", "step": None, "line": None, "action": None,
                            "phase": v.first.phase if v.first else None,
                            "phase_label": v.first.label if v.first else None,
                            "object": v.drift.name, "reason": v.describe(),
                            "text": v.describe()} for v in drifted)
+        violations.extend({"kind": "physics", "step": None, "line": None, "action": None,
+                           "phase": o.phase, "phase_label": o.label, "object": o.name,
+                           "reason": o.describe(args.max_drift),
+                           "text": o.describe(args.max_drift)} for o in overlaps)
     valid = not violations
     if ui.json:
         ui.emit_json({"status": "valid" if valid else "invalid", "valid": valid,
@@ -81,6 +85,7 @@ def run(args, ui) -> int:
         if physics is not None:
             ui.plain(f"physics: {len(physics.objects)} object(s) replayed for "
                      f"{physics.seconds:.1f} s; largest drift {physics.max_distance:.4f} m")
+
     return ExitCode.OK if valid else ExitCode.NO_SOLUTION
 
 
@@ -96,14 +101,16 @@ def physics_flags(args, is_solution: bool) -> None:
 
 
 def _physics(args):
-    """The physics replay of the solution, and the objects it finds beyond tolerance."""
+    """The physics replay of the solution, the objects it finds beyond tolerance, and
+    the robot's passes into objects deeper than the replay grants."""
     from tampcli.render.inputs import load_inputs, mode_kind_of
-    from tampcli.render.physics import drift_violations, replay_physics
+    from tampcli.render.physics import drift_violations, overlap_violations, replay_physics
 
     inputs = load_inputs(args.plan)
     with _c_stdout_to_stderr():
         replay = replay_physics(inputs, mode_kind_of(inputs.modes))
-    return replay, drift_violations(replay, args.max_drift, args.max_turn)
+    return (replay, drift_violations(replay, args.max_drift, args.max_turn),
+            overlap_violations(replay, args.max_drift))
 
 
 def _geometric_violations(checked, domain, problem, domain_path) -> tuple[str, list[str]]:

@@ -28,6 +28,8 @@ from tampcli.geometry import transforms
 from tampcli.geometry.shapes import mesh_hulls
 from tampcli.render.replay import Replay
 
+OVERLAP_NOTED = 0.001  # m: a deeper pass of the robot into an exempt object is reported
+
 
 @dataclass(frozen=True)
 class PhysicsSettings:
@@ -93,6 +95,24 @@ class Grip:
 
 
 @dataclass(frozen=True)
+class Overlap:
+    """The robot passing into an object where the planner allows it (and the replay
+    lets it through): the last move before taking it, the first after letting go."""
+
+    name: str
+    phase: int
+    label: str
+    depth: float  # m, the deepest seen in this phase
+    contact: float  # m, how deep the robot was into it where it took or let go of it
+
+    def describe(self, max_distance: float) -> str:
+        return (f"physics: the robot passes {self.depth * 1000:.1f} mm into {self.name} in "
+                f"phase {self.phase}: {self.label}, {(self.depth - self.contact) * 1000:.1f} "
+                "mm deeper than where it takes or lets go of it; the replay lets it through, "
+                f"a real robot would shove it farther than the {max_distance:g} m allowed")
+
+
+@dataclass(frozen=True)
 class PhysicsReplay:
     """The outcome of one physics replay."""
 
@@ -102,6 +122,7 @@ class PhysicsReplay:
     objects: tuple[ObjectDrift, ...]
     tracking_error: float  # largest joint error seen while moving (rad, or m for planar)
     grips: tuple[Grip, ...] = ()  # each finger grasp, in order
+    overlaps: tuple[Overlap, ...] = ()  # deeper than OVERLAP_NOTED, in order
     settings: PhysicsSettings = field(default_factory=PhysicsSettings)
 
     @property
@@ -119,7 +140,10 @@ class PhysicsReplay:
                                                 for d in o.phases]}
                             for o in self.objects},
                 "max_distance": self.max_distance, "tracking_error": self.tracking_error,
-                "grips": [{"object": g.name, "opening": g.opening} for g in self.grips]}
+                "grips": [{"object": g.name, "opening": g.opening} for g in self.grips],
+                "overlaps": [{"object": o.name, "phase": o.phase, "label": o.label,
+                              "depth": o.depth, "contact": o.contact}
+                             for o in self.overlaps]}
 
 
 @dataclass(frozen=True)
@@ -148,6 +172,13 @@ def drift_violations(replay: PhysicsReplay, max_distance: float,
                                 max_angle_deg)
                  for o in replay.objects
                  if o.distance > max_distance or o.angle_deg > max_angle_deg)
+
+
+def overlap_violations(replay: PhysicsReplay, max_distance: float) -> tuple[Overlap, ...]:
+    """The robot's passes into an object more than `max_distance` deeper than its contact
+    where it takes or lets go of it: the replay lets them through, a real robot would
+    shove the object at least that far."""
+    return tuple(o for o in replay.overlaps if o.depth - o.contact > max_distance)
 
 
 def object_mass(body, density: float) -> float:
@@ -208,6 +239,9 @@ class _Run:
         self.tracking = 0.0
         self.phase_drifts: dict[str, list[PhaseDrift]] = {name: [] for name in first.poses}
         self.grips: list[Grip] = []
+        # [name, phase, depth, contact or None until the grasp that ends an approach]
+        self.overlaps: list[list] = []
+        self.contact: dict[str, float] = {}  # depth at the last release, during the retreat
 
     def _step(self, q, track: bool = True) -> None:
         self.sim.drive(q, self.force, self.settings.finger_force, self.settings.gain)
@@ -236,9 +270,11 @@ class _Run:
         if released is not None:
             # the retreat's first move may still pass into it (play's exemptions)
             self.sim.release(heed=False)
+            self.contact[released] = self.sim.overlap(released)
             self.sim.open_fingers()
             self._wait(q, self.settings.settle_after_place)
         if held is not None:
+            self._taking(held)
             if grip and self.sim.close_fingers_on(held):
                 self._wait(q, self.settings.grip_seconds)
                 self.grips.append(Grip(held, float(np.sum(self.sim.finger_positions()))))
@@ -299,8 +335,11 @@ class _Run:
                     if j in exempt:
                         self.sim.ignore_robot(exempt[j])
                 self._step(state.q)
+                if j in exempt and s % 4 == 0:
+                    self._note_overlap(exempt[j], item.phase)
             if j in exempt and exempt.get(j + 1) != exempt[j] and exempt[j] != self.sim.held:
                 self.sim.heed_robot(exempt[j])
+                self.contact.pop(exempt[j], None)
             last_of_phase = j + 1 == len(items) or items[j + 1].phase != item.phase
             if last_of_phase and 0 <= item.phase < len(self.solution.phases):
                 self._record(item.phase)
@@ -310,6 +349,24 @@ class _Run:
             self._switch(None, final.q, False)
             self.sim.heed_robot(released)
         self._wait(final.q, self.settings.settle_final)
+
+    def _note_overlap(self, name: str, k: int) -> None:
+        depth = self.sim.overlap(name)
+        if depth <= OVERLAP_NOTED or name == self.sim.held \
+                or not 0 <= k < len(self.solution.phases):
+            return
+        last = self.overlaps[-1] if self.overlaps else None
+        if last is not None and last[:2] == [name, k]:
+            last[2] = max(last[2], depth)
+        else:
+            self.overlaps.append([name, k, depth, self.contact.get(name)])
+
+    def _taking(self, name: str) -> None:
+        """The approach to `name` is over: its passes are measured against this contact."""
+        depth = self.sim.overlap(name)
+        for entry in self.overlaps:
+            if entry[0] == name and entry[3] is None:
+                entry[3] = depth
 
     def _label(self, k: int) -> str:
         phase = self.solution.phases[k]
@@ -338,7 +395,11 @@ class _Run:
                 tuple(self.phase_drifts.get(name, ()))))
         hz = self.settings.hz
         return PhysicsReplay(self.steps / hz, self.steps, hz, tuple(objects), self.tracking,
-                             tuple(self.grips), self.settings)
+                             tuple(self.grips), self._overlaps(), self.settings)
+
+    def _overlaps(self) -> tuple[Overlap, ...]:
+        return tuple(Overlap(name, k, self._label(k), depth, contact or 0.0)
+                     for name, k, depth, contact in self.overlaps)
 
 
 def _drift(planned: np.ndarray, simulated: np.ndarray) -> tuple[float, float]:

@@ -69,6 +69,22 @@ def test_leaning_tower_text_names_object_drift_and_phase(cli, leaning):
     assert "tolerance 0.01 m, 5 deg" in line and "(stack a b)" in line
 
 
+def test_hand_sweeping_through_a_placed_cube_is_refused(cli, tmp_path):
+    """Leaving each cube sideways, the fingers sweep through it in the first segment of
+    the retreat: contact the planner allows there, and the replay lets through, but
+    not 2 cm deep."""
+    path = tmp_path / "sideways.json"
+    solution_file.write(tower_solution(lift=False), path)
+    run = cli("validate", "--json", "--physics", DOMAIN, TOWER_PROBLEM, path)
+    data = json.loads(run.out)
+    assert run.code == 1
+    swept = [v for v in data["violations"] if v["kind"] == "physics"]
+    assert [v["object"] for v in swept] == ["c"] and swept[0]["phase"] == 4
+    assert "mm deeper than where it takes or lets go of it" in swept[0]["text"]
+    overlap = data["physics"]["overlaps"][0]
+    assert overlap["depth"] - overlap["contact"] > 0.015
+
+
 def test_tolerance_flags_change_the_verdict(cli, leaning):
     run = cli("validate", "--physics", "--max-drift", "1", "--max-turn", "180", DOMAIN,
               TOWER_PROBLEM, leaning)

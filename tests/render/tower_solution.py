@@ -29,8 +29,10 @@ def _interpolate(configs) -> list[np.ndarray]:
     return out
 
 
-def tower_solution(offsets: dict[str, tuple[float, float]] | None = None) -> Solution:
-    """Stack c on d, b on c, a on b; `offsets[cube]` (x, y in m) off-centre."""
+def tower_solution(offsets: dict[str, tuple[float, float]] | None = None,
+                   lift: bool = True) -> Solution:
+    """Stack c on d, b on c, a on b; `offsets[cube]` (x, y in m) off-centre. Without
+    `lift` the hand leaves each placed cube sideways, its finger sweeping through it."""
     offsets = offsets or {}
     scene = load_scene(TOWER / "tower4.scene.toml", geometric=False)
     with World(scene) as world:
@@ -49,6 +51,7 @@ def tower_solution(offsets: dict[str, tuple[float, float]] | None = None) -> Sol
         sizes = {b.name: b.size[2] for b in scene.bodies if not b.fixed}
         trajectory = [np.asarray(world.start, dtype=float)]
         phases, plan, boundaries = [], [], [dict(poses)]
+        up = lift
         lift: list[np.ndarray] = []  # straight up from the last place first
         for cube, onto in ORDER:
             start = poses[cube][:3, 3]
@@ -74,9 +77,9 @@ def tower_solution(offsets: dict[str, tuple[float, float]] | None = None) -> Sol
                 phases.append(Phase(action, last, last, cube if kind == "free" else None))
                 plan.append(action)
                 boundaries.append(dict(poses))
-            lift = [reach(goal + [0, 0, 0.04]), above_goal]
+            lift = [reach(goal + [0, 0, 0.04]), above_goal] if up else []
         first = len(trajectory) - 1
-        trajectory += _interpolate([trajectory[-1], *lift])[1:]
+        trajectory += _interpolate([trajectory[-1], *(lift or [above_goal])])[1:]
         phases.append(Phase(None, first, len(trajectory) - 1))
         boundaries.append(dict(poses))
         joints, tool = list(world.joint_names), world.tool_link

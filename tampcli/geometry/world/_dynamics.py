@@ -160,6 +160,13 @@ class Dynamics:
                 self._collide(name, True)
                 self._released.discard(name)
 
+    def overlap(self, name: str) -> float:
+        """How deep (m, 0 when apart) the robot reaches into `name` now, collisions
+        between them on or off."""
+        points = self._pb.getClosestPoints(self._robot, self._bodies[name], 0.0,
+                                           physicsClientId=self._client)
+        return max([0.0, *(-p[8] for p in points)])
+
     def step(self) -> None:
         self._restore_collisions()
         self._pb.stepSimulation(physicsClientId=self._client)
