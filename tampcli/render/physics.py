@@ -1,16 +1,19 @@
 """The physics replay: a solution replayed with PyBullet dynamics, and how far the
 objects end up from where the plan put them. `render --physics` shows it,
-`validate --physics` judges by it (`drift_violations`); both run this one replay.
+`validate --physics` judges by it (`drift_violations`, `overlap_violations`);
+both run this one replay.
 
 What is simulated (docs/physics.md states the numbers): the robot's joints
 track the replay's timeline under position control; at a grasp the robot
 first comes to rest, the fingers close until they touch the object, and a
 fixed constraint ties it to the tool; at a place the robot comes to rest,
 lets go, opens its fingers and waits `settle_after_place` seconds while the
-object settles. Pushed objects move by contact alone; gravity acts
-throughout; objects weigh their volume times a uniform density unless the
-scene gives their `mass`. A large drift means the plan relies on something
-physics does not grant: an unstable placement, a push that slips, a motion
+object settles. A pushed object is tied to the pusher as the planner moves it;
+gravity acts throughout; objects weigh their volume times a uniform density
+unless the scene gives their `mass`. Where the planner lets the robot touch
+the object it takes or lets go of, the replay lets it pass and measures how
+deep. A large drift means the plan relies on something physics does not
+grant: an unstable placement, a carried object that scrapes another, a motion
 too fast to track.
 
 Works on a World of its own, through the Dynamics it starts: the forces and
@@ -20,7 +23,7 @@ masses are this module's, the simulator stays the World's.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -123,7 +126,6 @@ class PhysicsReplay:
     tracking_error: float  # largest joint error seen while moving (rad, or m for planar)
     grips: tuple[Grip, ...] = ()  # each finger grasp, in order
     overlaps: tuple[Overlap, ...] = ()  # deeper than OVERLAP_NOTED, in order
-    settings: PhysicsSettings = field(default_factory=PhysicsSettings)
 
     @property
     def max_distance(self) -> float:
@@ -395,7 +397,7 @@ class _Run:
                 tuple(self.phase_drifts.get(name, ()))))
         hz = self.settings.hz
         return PhysicsReplay(self.steps / hz, self.steps, hz, tuple(objects), self.tracking,
-                             tuple(self.grips), self._overlaps(), self.settings)
+                             tuple(self.grips), self._overlaps())
 
     def _overlaps(self) -> tuple[Overlap, ...]:
         return tuple(Overlap(name, k, self._label(k), depth, contact or 0.0)
