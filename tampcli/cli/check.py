@@ -243,7 +243,7 @@ def _scene_tables(scene: dict) -> list[Table]:
     if scene.get("regions"):
         tables.append(_regions_table(scene["regions"]))
     if contacts:
-        tables.append(_contacts_table(contacts))
+        tables.append(_contacts_table(contacts, scene.get("start_contacts_within", 0.05)))
     return tables
 
 
@@ -290,15 +290,19 @@ def _regions_table(regions: list[dict]) -> Table:
     return table
 
 
-def _contacts_table(contacts: list[dict], rows: int = 10) -> Table:
-    table = Table(title="start state: closest pairs", title_justify="left")
-    table.add_column("a")
-    table.add_column("b")
+def _contacts_table(contacts: list[dict], within: float, rows: int = 10) -> Table:
+    """Robot-body, robot-robot and body-body pairs; parts named link:NAME or body:NAME."""
+    table = Table(title=f"start state: pairs closer than {within * 100:g} cm, closest first "
+                        "(two obstacles are not paired)", title_justify="left")
+    table.add_column("pair")
+    table.add_column("part")
+    table.add_column("other part")
     table.add_column("distance (mm)", justify="right")
     for c in contacts[:rows]:
-        table.add_row(c["a"], c["b"], f"{c['distance'] * 1000:.1f}")
+        mm = c["distance"] * 1000
+        table.add_row(c.get("kind", ""), c["a"], c["b"], f"{0.0 if abs(mm) < 0.05 else mm:.1f}")
     if len(contacts) > rows:
-        table.add_row(f"... {len(contacts) - rows} more (see --json)", "", "")
+        table.add_row(f"... {len(contacts) - rows} more (see --json)", "", "", "")
     return table
 
 

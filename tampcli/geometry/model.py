@@ -85,6 +85,7 @@ class Body:
     urdf: str | None = None  # resolved path of a URDF file
     scale: tuple[float, float, float] = (1.0, 1.0, 1.0)
     obstacle: bool = False  # not named in the PDDL problem
+    mass: float | None = None  # kg, for the physics replay; None: from volume and density
     line: int | None = field(default=None, compare=False)
 
     @property

@@ -38,8 +38,7 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, problem_path, scene_
     with World(scene) as world:
         checker = CollisionChecker(world)
         check_start_state(world, checker, src)
-        contacts = sorted(checker.distances(world.start, activation=REPORT_DISTANCE,
-                                            static=True), key=lambda c: c.distance)
+        contacts = start_pairs(world, checker, REPORT_DISTANCE)
         warnings += _reach_warnings(world, scene, _goal_names(problem.goal))
         robot = {
             "model": scene.robot.model,
@@ -69,11 +68,35 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, problem_path, scene_
         "regions": [{"name": r.name, "on": r.on, "center": list(r.center),
                      "size": list(r.size)} for r in scene.regions],
         "action_modes": {name: mode.kind for name, mode in (modes.items() if modes else ())},
-        "start_contacts": [{"a": c.a, "b": c.b, "distance": round(c.distance, 5)}
-                           for c in contacts],
+        "start_contacts": [{"a": c.a, "b": c.b, "kind": pair_kind(c),
+                            "distance": round(c.distance, 5)} for c in contacts],
         "start_contacts_within": REPORT_DISTANCE,
         "warnings": warnings,
     }
+
+
+def start_pairs(world, checker, within: float) -> list:
+    """Every pair of the start state closer than `within` (m), closest first: robot link
+    and body, robot link and link (the self-collision pairs), and body and body (an
+    object near a wall, on a table, beside another object). Two obstacles are left
+    out, as the start check leaves them: one fixed solid is often built of parts."""
+    pairs = list(checker.distances(world.start, activation=within, static=True))
+    bodies = world.scene.bodies
+    for i, a in enumerate(bodies):
+        for b in bodies[i + 1:]:
+            if a.fixed and b.fixed and a.obstacle and b.obstacle:
+                continue
+            c = checker.body_distance(a.name, a.matrix, b.name, b.matrix)
+            if c.distance < within:
+                pairs.append(c)
+    return sorted(pairs, key=lambda c: c.distance)
+
+
+def pair_kind(contact) -> str:
+    """"robot-body", "robot-robot" or "body-body", from the parts' name prefixes."""
+    sides = ["robot" if name.startswith(("link:", "held:")) else "body"
+             for name in (contact.a, contact.b)]
+    return "-".join(sorted(sides, key=lambda side: side != "robot"))
 
 
 def _body(body) -> dict:

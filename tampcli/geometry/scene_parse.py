@@ -28,7 +28,8 @@ _ROBOT_KEYS = ("model", "base", "start", "radius", "height", "urdf", "tool_link"
                "joints", "fingers", "package_paths")
 _URDF_KEYS = ("urdf", "tool_link", "tool_offset", "joints", "fingers", "package_paths")
 _FINGER_KEYS = ("joints", "open", "closed")
-_OBJECT_KEYS = ("name", "shape", "size", "pose", "fixed", "color", "mesh", "urdf", "scale")
+_OBJECT_KEYS = ("name", "shape", "size", "pose", "fixed", "color", "mesh", "urdf", "scale",
+                "mass")
 _REGION_KEYS = ("name", "on", "center", "size", "color")
 _CAMERA_KEYS = ("eye", "target", "up", "fov")
 _TOP_KEYS = ("robot", "objects", "regions", "camera")
@@ -342,9 +343,14 @@ def _body(src: TomlSource, index: int, data: dict) -> Body:
             scale = r.numbers("scale", (3,), "a positive number or 3 of them", positive=True)
         if shape == "urdf" and len(set(scale)) != 1:
             raise r.error("a urdf object scales uniformly: give one number", "scale")
+    mass = r.number("mass", None, positive=True) if r.has("mass") else None
+    fixed = r.boolean("fixed", False)
+    if mass is not None and fixed:
+        raise r.error("a fixed object does not move: `mass` is only for movable ones", "mass")
     return Body(name=name, shape=shape, size=size, pose=r.pose("pose"),
-                fixed=r.boolean("fixed", False), color=r.color("color", DEFAULT_COLOR),
-                mesh=mesh, urdf=urdf, scale=scale, line=src.line("objects", index, "name"))
+                fixed=fixed, color=r.color("color", DEFAULT_COLOR),
+                mesh=mesh, urdf=urdf, scale=scale, mass=mass,
+                line=src.line("objects", index, "name"))
 
 
 def _region(src: TomlSource, index: int, data: dict) -> Region:

@@ -72,7 +72,8 @@ def render_solution(source: RenderInputs | Solution | str | Path,
     if options.physics:
         from tampcli.render.physics import replay_physics
 
-        report["physics"] = replay_physics(inputs, mode_kind_of(inputs.modes), options.speed)
+        report["physics"] = replay_physics(inputs, mode_kind_of(inputs.modes),
+                                           options.speed).as_json()
     report["render_seconds"] = round(time.perf_counter() - started, 3)
     return report
 

@@ -79,3 +79,31 @@ def test_refuses_a_start_in_collision(tmp_path):
         _summary(domain, problem, d)
     assert info.value.key == "robot.start" and "in collision" in info.value.message
     assert info.value.line == 5
+
+
+def test_start_pairs_cover_bodies_near_walls_and_each_other(tmp_path):
+    # b (radius 3 cm) 2 cm in front of the wall's face at x = 0.74
+    text = (DATA / "p01.scene.toml").read_text().replace("pose = [0.5, 0.1, 0.04]",
+                                                         "pose = [0.69, 0.1, 0.04]")
+    d = _copy_with(tmp_path, text)
+    domain, problem = _load(d)
+    summary = scene_summary(domain, problem, d / "domain.pddl", d / "p01.pddl")
+    pairs = {frozenset((c["a"], c["b"])): c for c in summary["start_contacts"]}
+    near_wall = pairs[frozenset(("body:b", "body:wall"))]
+    assert near_wall["kind"] == "body-body"
+    assert near_wall["distance"] == pytest.approx(0.02, abs=1e-4)
+    assert pairs[frozenset(("body:a", "body:table"))]["kind"] == "body-body"
+    kinds = {c["kind"] for c in summary["start_contacts"]}
+    assert kinds <= {"robot-body", "robot-robot", "body-body"} and "robot-robot" in kinds
+    distances = [c["distance"] for c in summary["start_contacts"]]
+    assert distances == sorted(distances) and max(distances) < summary["start_contacts_within"]
+
+
+def test_start_pairs_table_has_clear_headers(cli):
+    run = cli("check", DATA / "domain.pddl", DATA / "p01.pddl")
+    assert run.code == 0, run.err
+    table = run.out[run.out.index("start state: pairs closer than 5 cm"):]
+    header = table.splitlines()[2]
+    assert [h.strip() for h in header.strip("┃ ").split("┃")] == [
+        "pair", "part", "other part", "distance (mm)"]
+    assert "body-body" in table and "body:wall" in table

@@ -99,3 +99,26 @@ def test_planar_robot_scene(tmp_path, domain, problem):
         load_checked(path, domain, problem)
     assert info.value.key == "robot.start" and "planar_body" in info.value.message
     assert info.value.source_line == "base = [0.3, 0.3, 0.025]"
+
+
+@pytest.mark.parametrize(("after", "mass", "error"), [
+    ('color = "red"', "0.2", None),
+    ('color = "red"', "-1", "must be positive, got -1"),
+    ('color = "red"', '"heavy"', "expected a number, got 'heavy'"),
+    ("fixed = true\ncolor = [0.55, 0.4, 0.3, 1.0]", "3.0", "a fixed object does not move"),
+])
+def test_object_mass(tmp_path, domain, problem, after, mass, error):
+    """`mass` (kg, for the physics replay): a positive number, only on a movable object."""
+    text = (DATA / "p01.scene.toml").read_text()
+    assert after in text
+    text = text.replace(after, f"{after}\nmass = {mass}", 1)
+    path = tmp_path / "p01.scene.toml"
+    path.write_text(text)
+    if error is None:
+        scene = load_scene(path, domain, problem)
+        assert scene.body("a").mass == pytest.approx(0.2) and scene.body("b").mass is None
+        return
+    with pytest.raises(SceneError) as info:
+        load_scene(path, domain, problem)
+    assert info.value.key == "objects.mass" and error in info.value.message
+    assert info.value.line == text.splitlines().index(f"mass = {mass}") + 1

@@ -1,0 +1,167 @@
+"""`validate --physics`: the physics replay judges a solution. A tower stacked aligned
+stands; one whose cubes each rest on the one below but overhang together falls, and
+the verdict names the cubes that fell and the action that made them fall."""
+
+import json
+
+import pytest
+from tower_solution import DOMAIN, TOWER, tower_solution
+
+from tampcli import solution as solution_file
+from tampcli.render.inputs import load_inputs, mode_kind_of
+from tampcli.render.physics import drift_violations, object_mass, replay_physics
+from tests.conftest import ROOT
+
+TOWER_PROBLEM = TOWER / "tower4.pddl"
+# Each cube's centre lies on the one below, so the geometric check passes; b and a
+# together lean 2.7 cm out from c's centre, past its 2.5 cm half-width.
+LEANING = {"c": (0.02, 0.0), "b": (0.02, 0.0), "a": (0.019, 0.0)}
+
+
+@pytest.fixture(scope="module")
+def tower(tmp_path_factory):
+    path = tmp_path_factory.mktemp("tower") / "aligned.json"
+    solution_file.write(tower_solution(), path)
+    return path
+
+
+@pytest.fixture(scope="module")
+def leaning(tmp_path_factory):
+    path = tmp_path_factory.mktemp("tower") / "leaning.json"
+    solution_file.write(tower_solution(LEANING), path)
+    return path
+
+
+def test_aligned_tower_of_four_stands(cli, tower):
+    run = cli("validate", "--json", "--physics", DOMAIN, TOWER_PROBLEM, tower)
+    data = json.loads(run.out)
+    assert run.code == 0, data["violations"]
+    physics = data["physics"]
+    assert set(physics["objects"]) == {"a", "b", "c", "d"}
+    assert physics["max_distance"] < 0.005
+    # each cube was lifted onto the tower, not left where it stood
+    assert physics["objects"]["a"]["simulated"][2] == pytest.approx(0.06 + 0.05 + 0.04 + 0.015,
+                                                                    abs=0.003)
+
+
+def test_fingers_close_to_the_width_of_what_they_grasp(tower):
+    inputs = load_inputs(tower)
+    replay = replay_physics(inputs, mode_kind_of(inputs.modes))
+    openings = {g.name: g.opening for g in replay.grips}
+    assert openings == pytest.approx({"c": 0.05, "b": 0.04, "a": 0.03}, abs=0.004)
+
+
+def test_leaning_tower_is_refused_naming_what_fell(cli, leaning):
+    run = cli("validate", "--json", "--physics", DOMAIN, TOWER_PROBLEM, leaning)
+    data = json.loads(run.out)
+    assert run.code == 1
+    assert {v["kind"] for v in data["violations"]} == {"physics"}, data["violations"]
+    fell = {v["object"]: v for v in data["violations"]}
+    assert {"a", "b"} <= set(fell) and "d" not in fell
+    assert fell["b"]["phase_label"] == "(stack a b)"
+    assert data["physics"]["objects"]["b"]["distance"] > 0.05
+
+
+def test_leaning_tower_text_names_object_drift_and_phase(cli, leaning):
+    run = cli("validate", "--physics", DOMAIN, TOWER_PROBLEM, leaning)
+    assert run.code == 1
+    line = next(s for s in run.out.splitlines() if "physics: b ends" in s)
+    assert "tolerance 0.01 m, 5 deg" in line and "(stack a b)" in line
+
+
+def test_hand_sweeping_through_a_placed_cube_is_refused(cli, tmp_path):
+    """Leaving each cube sideways, the fingers sweep through it in the first segment of
+    the retreat: contact the planner allows there, and the replay lets through, but
+    not 2 cm deep."""
+    path = tmp_path / "sideways.json"
+    solution_file.write(tower_solution(lift=False), path)
+    run = cli("validate", "--json", "--physics", DOMAIN, TOWER_PROBLEM, path)
+    data = json.loads(run.out)
+    assert run.code == 1
+    swept = [v for v in data["violations"] if v["kind"] == "physics"]
+    assert [v["object"] for v in swept] == ["c"] and swept[0]["phase"] == 4
+    assert "mm deeper than where it takes or lets go of it" in swept[0]["text"]
+    overlap = data["physics"]["overlaps"][0]
+    assert overlap["depth"] - overlap["contact"] > 0.015
+
+
+def test_tolerance_flags_change_the_verdict(cli, leaning):
+    run = cli("validate", "--physics", "--max-drift", "1", "--max-turn", "180", DOMAIN,
+              TOWER_PROBLEM, leaning)
+    assert run.code == 0, run.out
+
+
+def test_without_the_flag_physics_is_not_consulted(cli, leaning):
+    run = cli("validate", "--json", DOMAIN, TOWER_PROBLEM, leaning)
+    assert run.code == 0 and "physics" not in json.loads(run.out)
+
+
+def test_violations_match_the_replay(leaning):
+    inputs = load_inputs(leaning)
+    replay = replay_physics(inputs, mode_kind_of(inputs.modes))
+    found = drift_violations(replay, 0.01, 5.0)
+    assert {v.drift.name for v in found} == {o.name for o in replay.objects
+                                             if o.distance > 0.01 or o.angle_deg > 5.0}
+    b = next(v for v in found if v.drift.name == "b")
+    # before a was stacked, b stood where the plan put it
+    assert all(d.distance < 0.01 for d in b.drift.phases if d.phase < b.first.phase)
+
+
+def test_masses_from_density_or_the_scene(leaning):
+    scene = load_inputs(leaning).scene
+    assert object_mass(scene.body("c"), 500.0) == pytest.approx(0.05 ** 3 * 500.0)
+    assert object_mass(scene.body("a"), 500.0) == pytest.approx(0.02)  # `mass = 0.02`
+
+
+@pytest.mark.parametrize("flag", ["--max-drift", "--max-turn"])
+def test_non_positive_tolerance_exits_2(cli, leaning, flag):
+    run = cli("validate", "--physics", flag, "0", DOMAIN, TOWER_PROBLEM, leaning)
+    assert run.code == 2 and flag in run.err and "Traceback" not in run.err
+
+
+def test_physics_of_a_plan_file_exits_2(cli, tmp_path):
+    plan = tmp_path / "plan.txt"
+    plan.write_text("(pick c start)\n")
+    run = cli("validate", "--physics", DOMAIN, TOWER_PROBLEM, plan)
+    assert run.code == 2 and "solution.json" in run.err
+
+
+# ---------------------------------------------------------------- library solutions
+
+SCENES = sorted(ROOT.glob("problems/*/*.scene.toml"))
+# Issue 20: the optimizer sweeps the carried cube a across b's top edge on its way
+# down and drags the tower over. Expected to pass once the optimizer keeps
+# stacks stable; strict, so a pass is noticed.
+UNSTABLE = {"arm-pick-place/p05"}
+
+
+def _key(scene) -> str:
+    return f"{scene.parent.name}/{scene.name.split('.')[0]}"
+
+
+def _solve_and_validate(cli, scene, tmp_path):
+    domain = ROOT / "domains" / scene.parent.name / "domain.pddl"
+    problem = scene.parent / (scene.name.split(".")[0] + ".pddl")
+    out = tmp_path / "solution.json"
+    solved = cli("solve", "--quiet", "--out", out, domain, problem)
+    assert solved.code == 0, solved.err
+    run = cli("validate", "--json", "--physics", domain, problem, out)
+    data = json.loads(run.out)
+    return run.code, data
+
+
+@pytest.mark.parametrize("key", ["arm-pick-place/p01", "planar-tamp/p01"])
+def test_quick_library_solutions_pass_physics(cli, key, tmp_path):
+    scene = ROOT / "problems" / f"{key}.scene.toml"
+    code, data = _solve_and_validate(cli, scene, tmp_path)
+    assert code == 0, data["violations"]
+    assert data["physics"]["max_distance"] < 0.01
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scene", [
+    pytest.param(s, marks=pytest.mark.xfail(strict=True, reason="issue 20: the tower falls"))
+    if _key(s) in UNSTABLE else s for s in SCENES], ids=[_key(s) for s in SCENES])
+def test_every_library_solution_passes_physics(cli, scene, tmp_path):
+    code, data = _solve_and_validate(cli, scene, tmp_path)
+    assert code == 0, data["violations"]
