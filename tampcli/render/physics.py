@@ -29,6 +29,7 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.geometry.shapes import mesh_hulls
+from tampcli.optimize.kinds import KINDS
 from tampcli.render.replay import Replay
 
 OVERLAP_NOTED = 0.001  # m: a deeper pass of the robot into an exempt object is reported
@@ -282,6 +283,11 @@ class _Run:
                 self.grips.append(Grip(held, float(np.sum(self.sim.finger_positions()))))
             self.sim.grasp(held, self.settings.grasp_force)
 
+    def _kind(self, action: str):
+        """The action's mode kind (optimize.kinds), or None when unknown."""
+        name = self.mode_kind(action)
+        return KINDS.get(name) if name is not None else None
+
     def _holding(self, items, ends) -> list[tuple[str | None, bool]]:
         """Per timeline item: the object tied to the tool, and whether the fingers grip
         it. A push ties its object too: the planner moves it with the pusher, sliding
@@ -291,8 +297,9 @@ class _Run:
             state = self.replay.state_at(end - 0.5 * item.duration)
             phase = self.solution.phases[item.phase] \
                 if 0 <= item.phase < len(self.solution.phases) else None
-            pushing = phase is not None and item.kind == "move" and phase.action is not None \
-                and phase.attached is not None and self.mode_kind(phase.action) == "push"
+            kind = self._kind(phase.action) if phase is not None and phase.action else None
+            pushing = item.moving and phase.attached is not None and kind is not None \
+                and not kind.holds
             out.append((phase.attached, False) if pushing else (state.held, True))
         return out
 
@@ -305,14 +312,14 @@ class _Run:
             before, after = holding[j - 1][0], holding[j][0]
             if after is not None and after != before:
                 i = j - 1
-                while i >= 0 and items[i].kind != "move":
+                while i >= 0 and not items[i].moving:
                     marks[i] = after
                     i -= 1
                 if i >= 0:
                     marks[i] = after
             if before is not None and after != before:
                 i = j
-                while i < len(items) and items[i].kind != "move" and holding[i][0] is None:
+                while i < len(items) and not items[i].moving and holding[i][0] is None:
                     marks[i] = before
                     i += 1
                 if i < len(items) and holding[i][0] is None:

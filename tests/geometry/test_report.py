@@ -87,7 +87,7 @@ def test_start_pairs_cover_bodies_near_walls_and_each_other(tmp_path):
                                                          "pose = [0.69, 0.1, 0.04]")
     d = _copy_with(tmp_path, text)
     domain, problem = _load(d)
-    summary = scene_summary(domain, problem, d / "domain.pddl", d / "p01.pddl")
+    summary = _summary(domain, problem, d)
     pairs = {frozenset((c["a"], c["b"])): c for c in summary["start_contacts"]}
     near_wall = pairs[frozenset(("body:b", "body:wall"))]
     assert near_wall["kind"] == "body-body"
