@@ -66,10 +66,11 @@ class Place(ModeKind):
             q = walk.planar_q(np.array([x, y, step.rest_z]), grip, walk.grip[grasp.index])
             P = pose_matrix(x, y, step.rest_z, yaw)
         else:
-            hold = transforms.pose_inverse(grip.matrix(0.0))
+            held = grip.matrix(walk.grip.get(grasp.index, 0.0))
+            hold = transforms.pose_inverse(held)
             targets = [(pose_matrix(x, y, step.rest_z, yaw + d) @ hold, yaw + d)
                        for d in walk.QUARTERS]
-            q, yaw_ = walk.best_of(targets, (step.obj, grip.matrix(0.0)), {step.support})
+            q, yaw_ = walk.best_of(targets, (step.obj, held), {step.support})
             P = pose_matrix(x, y, step.rest_z, yaw_)
         walk.poses[step.obj] = P
         walk.q[k] = q
