@@ -68,8 +68,12 @@ class Place(ModeKind):
         else:
             held = grip.matrix(walk.grip.get(grasp.index, 0.0))
             hold = transforms.pose_inverse(held)
+            # A quarter turn changes an oblong footprint: only the placement's
+            # own yaw and its half turn keep the final NLP's answer.
+            info = walk.problem.bodies[step.obj]
+            square = info.disk or abs(info.half[0] - info.half[1]) < REST_TOLERANCE
             targets = [(pose_matrix(x, y, step.rest_z, yaw + d) @ hold, yaw + d)
-                       for d in walk.QUARTERS]
+                       for d in (walk.QUARTERS if square else walk.QUARTERS[::2])]
             q, yaw_ = walk.best_of(targets, (step.obj, held), {step.support})
             P = pose_matrix(x, y, step.rest_z, yaw_)
         walk.poses[step.obj] = P
