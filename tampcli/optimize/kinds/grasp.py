@@ -134,7 +134,7 @@ class Grasp(ModeKind):
         local = obj[:3, :3].T @ d
         if np.any(np.abs(local) > np.array(info.half) + TOUCH_TOLERANCE):
             return [f"{step.name}: the grasp point is outside {step.obj}"]
-        families = getattr(step.kind, "families", tuple(F.FAMILIES))
+        families = step.kind.families
         if not any(F.FAMILIES[f].holds(tool, obj) for f in families):
             return [f"{step.name}: the gripper holds {step.obj} in no grasp family it may use "
                     f"({', '.join(families)})"]
