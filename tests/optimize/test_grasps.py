@@ -223,3 +223,27 @@ def test_verify_knows_each_family_by_the_tool_pose():
     assert top.holds(down, obj) and not side.holds(down, obj)
     assert side.holds(level, obj) and side.holds(pitched, obj) and not top.holds(level, obj)
     assert not side.holds(steep, obj) and not side.holds(rolled, obj)
+
+
+@pytest.mark.parametrize(("arm", "name", "plan"), [
+    ("xarm6", "shelf", PLAN),
+    ("xarm6", "ledge", ("(pick a cubby)", "(place a tray)")),
+    ("kuka_iiwa", "ledge", ("(pick a cubby)", "(place a tray)")),
+])
+def test_other_arms_grasp_from_the_side(tmp_path, arm, name, plan):
+    """The families use the World's opening and fingertip depth, not the Panda's."""
+    domain = parser.parse_domain_file(DOMAIN)
+    text = (SCENES / f"{name}.scene.toml").read_text().replace('model = "panda"',
+                                                                f'model = "{arm}"')
+    text = "\n".join(ln for ln in text.splitlines() if not ln.startswith("start ="))
+    path = tmp_path / f"{name}.scene.toml"
+    path.write_text(text)
+    scene = load_scene(path, domain, parser.parse_problem_file(SCENES / f"{name}.pddl"))
+    modes = load_modes(DOMAIN.with_name("modes.toml"), domain)
+    with World(scene) as world:
+        assert world.gripper_opening is not None
+        problem = lower(ops(*plan), scene, modes, world)
+        result = solve(problem, "path")
+        assert result.solved, result.worst_constraint
+        assert result.choices[0].family == "side"
+        assert verify(problem, result) == []
