@@ -31,7 +31,7 @@ SIDE_PITCH = math.pi / 3  # rad, the steepest a side approach comes down
 SIDE_REACH = 0.012  # m
 SIDE_BELOW_TOP = 0.01  # m, ... and this far below its top (half a fingertip's width)
 SIDE_MIN_HEIGHT = 0.03  # m: a flatter object leaves a side grasp's fingers the support
-TILT = math.radians(2.0)  # rad, how far verify lets a grasp stray from its family
+TILT = math.acos(0.99)  # rad (8.1 deg), how far verify lets a grasp stray from its family
 QUARTERS = (0.0, 0.5 * math.pi, math.pi, -0.5 * math.pi)
 
 
