@@ -76,7 +76,8 @@ class Grip(ABC):
     """Object frame in the tool frame as a function of an optional parameter t.
 
     One subclass per way of holding: TopGrip (arm, fixed yaw offset),
-    YawGrip (arm, t = yaw offset), SideGrip (planar suction, t = contact angle).
+    PitchGrip (arm from the side, t = pitch), YawGrip (arm pushing, t = yaw
+    offset), SideGrip (planar suction, t = contact angle).
     """
 
     c0: tuple[float, float, float]  # centre when it does not depend on t
@@ -161,3 +162,38 @@ def held_pose(frame: Frame, grip: Grip, t: float) -> HeldPose:
     axes = frame.R @ G
     daxes = np.stack([-skew(axes[:, i]) @ frame.Jw for i in range(3)], axis=1)
     return HeldPose(pos, axes, dpos_dq, daxes, frame.R @ dc, frame.R @ dG)
+
+
+def _rz(psi: float) -> np.ndarray:
+    c, s = math.cos(psi), math.sin(psi)
+    return np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+
+
+@dataclass(frozen=True)
+class PitchGrip(Grip):
+    """The arm's fingers from the side: the approach along direction psi of the
+    object's frame, pitched down by t from horizontal (t = pi/2 would come from
+    above), the fingers closing across it with the tool's y axis horizontal;
+    `roll` = -1 turns the hand over about its approach.
+
+    Here c0 is the grasp point (the tool origin) in the object's frame: the
+    hand turns about it as t changes, so the fingers keep straddling the same
+    part of the object.
+    """
+
+    psi: float = 0.0
+    roll: float = 1.0
+    has_param = True
+
+    def tool_axes(self, t: float):
+        """Tool axes (columns x y z) in the object's frame, and d/dt."""
+        ct, st, s = math.cos(t), math.sin(t), self.roll
+        a = np.array([[-s * st, 0.0, ct], [0.0, s, 0.0], [-s * ct, 0.0, -st]])
+        da = np.array([[-s * ct, 0.0, -st], [0.0, 0.0, 0.0], [s * st, 0.0, -ct]])
+        z = _rz(self.psi)
+        return z @ a, z @ da
+
+    def parts(self, t: float):
+        R, dR = self.tool_axes(t)
+        p = np.array(self.c0)
+        return -R.T @ p, R.T, -dR.T @ p, dR.T

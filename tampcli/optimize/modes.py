@@ -14,10 +14,11 @@ from pathlib import Path
 
 from tampcli.errors import SceneError, source_line_at
 from tampcli.geometry.tomlsrc import read_toml
+from tampcli.optimize.grasp_families import FAMILIES
 from tampcli.optimize.kinds import KINDS, SYMBOLIC
 from tampcli.pddl import ast
 
-_KEYS = ("mode", "object", "on", "to")
+_KEYS = ("mode", "object", "on", "to", "grasps")
 
 
 @dataclass(frozen=True)
@@ -29,6 +30,7 @@ class Mode:
     to: str | None = None
     params: tuple[str, ...] = ()  # the action's parameter names, in order
     line: int | None = field(default=None, compare=False)
+    grasps: tuple[str, ...] | None = None  # grasp families it may use (None: every one)
 
     @property
     def geometric(self) -> bool:
@@ -116,7 +118,26 @@ def load_modes(path: str | Path, domain: ast.Domain) -> Modes:
                 raise src.error(f"action {action.name!r} has no parameter {value} (it has "
                                 f"{have})", action_name, 0, role)
             values[role] = value
-        table.append((action.name, Mode(action.name, kind, params=params, line=line, **values)))
+        grasps = _grasps(src, action_name, kind, data.get("grasps"))
+        table.append((action.name, Mode(action.name, kind, params=params, line=line,
+                                        grasps=grasps, **values)))
     named = {name for name, _ in table}
     missing = tuple(a.name for a in domain.actions if a.name not in named)
     return Modes(src.path, tuple(table), missing)
+
+
+def _grasps(src, action_name: str, kind: str, value) -> tuple[str, ...] | None:
+    """The `grasps` key: a non-empty list of grasp family names, for a kind that takes it."""
+    if value is None:
+        return None
+    if not getattr(KINDS[kind], "takes_grasps", False):
+        raise src.error(f"mode {kind!r} takes no `grasps`", action_name, 0, "grasps")
+    known = ", ".join(FAMILIES)
+    if not isinstance(value, list) or not value:
+        raise src.error(f"expected a list of grasp families such as [\"top\", \"side\"] "
+                        f"(of {known}), got {value!r}", action_name, 0, "grasps")
+    for name in value:
+        if not isinstance(name, str) or name not in FAMILIES:
+            raise src.error(f"unknown grasp family {name!r}; expected one of {known}",
+                            action_name, 0, "grasps")
+    return tuple(dict.fromkeys(value))

@@ -62,7 +62,8 @@ def lower(skeleton, scene, modes, world, options: OptimizeOptions | None = None,
     names = tuple(op.name for op in skeleton)
     base = dict(names=names, bodies=infos, start_supports=supports, scene=scene, world=world,
                 options=options, planar=planar, checker=checker)
-    lo = Lowering(infos, supports, {r.name: r for r in scene.regions}, planar, domain)
+    lo = Lowering(infos, supports, {r.name: r for r in scene.regions}, planar, domain,
+                  None if planar else world.gripper_opening)
     try:
         for i, op in enumerate(skeleton):
             mode = mode_of(modes, op.action)

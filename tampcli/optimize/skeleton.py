@@ -60,8 +60,10 @@ class LoweringError(Exception):
 class Lowering:
     """The walk over a skeleton that lowering is: what is held, what rests where."""
 
-    def __init__(self, infos: dict, supports: dict, regions: dict, planar: bool, domain):
+    def __init__(self, infos: dict, supports: dict, regions: dict, planar: bool, domain,
+                 gripper_opening: float | None = None):
         self.infos = infos
+        self.gripper_opening = gripper_opening  # World.gripper_opening: None, no width limit
         self.regions = regions
         self.planar = planar
         self.domain = domain

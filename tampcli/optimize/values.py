@@ -16,9 +16,12 @@ from tampcli.optimize.layout import grip_block, keyframe_block, placement_block
 
 @dataclass(frozen=True)
 class GripChoice:
-    """The discrete part of a step's grip, fixed by the initial guess and then kept."""
+    """The discrete part of a step's grip, fixed by the initial guess and then kept
+    (the continuous part, a side grasp's pitch, is a variable of the keyframe NLP)."""
 
-    psi: float | None = None  # arm top grasp: object yaw minus tool yaw
+    psi: float | None = None  # arm: object yaw minus tool yaw (top); approach direction (side)
+    family: str | None = None  # arm: a key of grasp_families.FAMILIES (None: "top")
+    roll: float = 1.0  # arm side grasp: -1 turns the hand over about its approach
     z: float | None = None  # planar: height of the object's centre while it is held
     yaw: float | None = None  # planar: the object's yaw while it is held (the disk cannot turn)
 

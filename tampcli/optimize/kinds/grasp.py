@@ -1,41 +1,46 @@
 """grasp: the object moves with the hand from here on.
 
 A free motion ends at the grasp keyframe (the fingers may touch the object in
-its last segment); the arm holds it from the top (fingers along the tool's y
-axis, at a fixed yaw offset chosen by the guess), the planar robot by
-suction on its side (at a contact angle, a grip parameter).
+its last segment). The arm holds it in one of the grasp families the action
+allows and the gripper can do on that shape (grasp_families.py: from the top,
+from the side at a pitch); the planar robot by suction on its side (at a
+contact angle, a grip parameter).
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 
 import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
-from tampcli.optimize.bodies import REST_TOLERANCE, TOUCH_TOLERANCE
-from tampcli.optimize.grips import TopGrip
+from tampcli.optimize import grasp_families as F
+from tampcli.optimize.bodies import TOUCH_TOLERANCE
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
-PANDA_OPENING = 0.08  # m, fingers fully open
-GRIPPER_SLACK = 0.005  # m: an object this much narrower than the opening fits between
-PANDA_FINGER_DEPTH = 0.015  # m, at most this far below the object's top is the grasp point
-PANDA_FINGERTIP = 0.01  # m, fingertips below the grasp target (collision mesh, measured)
-MIN_DEPTH = 0.002  # m, the grasp point at least this far below the object's top
-
-
-def fits_gripper(info, width: float) -> bool:
-    """The Panda's fingers close on `width` (disks fit in every direction they fit at all)."""
-    return info.disk or width <= PANDA_OPENING - GRIPPER_SLACK
-
 
 class Grasp(ModeKind):
+    """`families`: the grasp families (grasp_families.FAMILIES) a lowered step may
+    use; the registered kind allows every one, a step's kind those its action
+    allows that fit its object."""
+
     name = "grasp"
     required = ("object",)
     fingers = True
+    takes_grasps = True  # modes.toml may restrict the families (`grasps = [...]`)
+
+    def __init__(self, families: tuple[str, ...] = tuple(F.FAMILIES)):
+        self.families = families
+
+    def __eq__(self, other) -> bool:
+        return type(other) is type(self) and other.families == self.families
+
+    def __hash__(self) -> int:
+        return hash((self.name, self.families))
 
     def lower(self, lo, index, op, mode):
         obj, _, _ = lo.roles(op, mode)
@@ -45,28 +50,27 @@ class Grasp(ModeKind):
             raise LoweringError(f"{label}: already holding {lo.held}")
         if lo.stacked_on(obj):
             raise LoweringError(f"{label}: {obj} is under another object")
-        info = lo.infos[obj]
-        if not lo.planar and not fits_gripper(info, 2 * min(info.half[:2])):
-            raise LoweringError(f"{label}: {obj} is {200 * min(info.half[:2]):.1f} cm wide; "
-                                f"the gripper opens {100 * PANDA_OPENING:.0f} cm")
+        kind = self
+        if not lo.planar:
+            families, why = F.possible(getattr(mode, "grasps", None), lo.infos[obj],
+                                       lo.gripper_opening)
+            if not families:
+                raise LoweringError(f"{label}: no grasp of {obj} fits ({'; '.join(why)})")
+            kind = Grasp(families)
         k = lo.motion(index, "free", None, None, {obj})
         lo.last_contact = frozenset({lo.support.get(obj)} - {None})
-        step = Step(index, op.name, self, obj, held_before=None, held_after=obj,
+        step = Step(index, op.name, kind, obj, held_before=None, held_after=obj,
                     grasp_step=index, keyframes=(k,))
         lo.held, lo.held_grip = obj, index
-        if lo.planar:
+        if lo.planar or any(F.FAMILIES[f].has_param for f in kind.families):
             lo.grip_params.append(index)
         lo.support[obj] = None
         return step
 
     def grip(self, problem, step, choice):
-        # Deep enough to hold, shallow enough that the fingertips stay clear of
-        # whatever the object stands on (thin discs, trays with rims).
-        info = problem.bodies[step.obj]
-        clear = 2 * info.half[2] - PANDA_FINGERTIP - problem.options.margin - REST_TOLERANCE
-        depth = float(np.clip(min(PANDA_FINGER_DEPTH, clear), MIN_DEPTH, info.half[2]))
-        return TopGrip((0.0, 0.0, info.half[2] - depth),
-                       psi=choice.psi if choice.psi is not None else 0.0)
+        world = problem.world
+        return F.family_of(choice).grip(problem.bodies[step.obj], choice,
+                                        world.fingertip_depth or 0.0, problem.options.margin)
 
     def final_rows(self, walk, step):
         walk.state.pop(step.obj, None)
@@ -84,18 +88,10 @@ class Grasp(ModeKind):
             walk.grip[step.index] = float(phi)
             q = walk.planar_q(obj_pose[:3, 3], grip, phi)
         else:
-            info = walk.problem.bodies[step.obj]
-            targets = []
-            for psi in walk.QUARTERS:
-                # Fingers close along the tool's y axis: the object's width there.
-                width = 2 * (info.half[1] if abs(math.cos(psi)) > 0.5 else info.half[0])
-                if not fits_gripper(info, width):
-                    continue
-                walk.choices[step.index] = GripChoice(psi=psi)
-                grip = walk.grip_of(step)
-                targets.append((obj_pose @ transforms.pose_inverse(grip.matrix(0.0)), psi))
-            q, psi = walk.best_of(targets, ignore={step.obj})
-            walk.choices[step.index] = GripChoice(psi=psi)
+            choice, t, q = _choose(walk, step, obj_pose)
+            walk.choices[step.index] = choice
+            if step.index in walk.problem.grip_params:
+                walk.grip[step.index] = t
         walk.q[k] = q
         walk.q_prev = q
 
@@ -104,10 +100,13 @@ class Grasp(ModeKind):
 
     def keyframe_rows(self, walk, step):
         (k,) = step.keyframes
-        frame, _, _, _, H = walk.gripped(k, step.index)
+        frame, _, t, t_block, H = walk.gripped(k, step.index)
         info = walk.problem.bodies[step.obj]
         C.same_pose(walk.rows.eq, walk.rows.ineq, step.name, H, walk.state[step.obj],
                     walk.planar, yaw=not info.disk and not walk.planar)
+        if not walk.planar:
+            F.family_of(walk.choices.get(step.index, GripChoice())).rows(
+                walk.rows.ineq, step.name, t, t_block)
         walk.collide(k, step, walk.held_now(), frame, {step.obj})
         walk.held = (step.obj, step.index)
         walk.state.pop(step.obj)
@@ -135,6 +134,47 @@ class Grasp(ModeKind):
         local = obj[:3, :3].T @ d
         if np.any(np.abs(local) > np.array(info.half) + TOUCH_TOLERANCE):
             return [f"{step.name}: the grasp point is outside {step.obj}"]
-        if tool[2, 2] > -0.99:
-            return [f"{step.name}: the gripper does not point down"]
+        families = step.kind.families
+        if not any(F.FAMILIES[f].holds(tool, obj) for f in families):
+            return [f"{step.name}: the gripper holds {step.obj} in no grasp family it may use "
+                    f"({', '.join(families)})"]
         return []
+
+
+def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
+    """The discrete grip of a grasp, its starting parameter and the IK keyframe.
+
+    Every fitting grip of every family the step allows is tried by IK; the
+    reachable ones first, then the least penetrating (so a hand that only
+    fits under a shelf from the side is taken from the side), then the
+    family's rank (a top grasp where it is clear: what the library's
+    problems were built with), then the joint distance. A retry (jitter)
+    ranks by penetration and distance only, so it may try another family.
+    Families are tried in rank order and the search stops at the first that
+    has a reachable, clear grip.
+    """
+    problem = walk.problem
+    info = problem.bodies[step.obj]
+    margin = problem.options.margin
+    moved = {n: p for n, p in walk.poses.items() if n != step.obj}
+    best = None
+    for rank, name in enumerate(step.kind.families):
+        family = F.FAMILIES[name]
+        for choice, t in itertools.product(family.choices(info, problem.world.gripper_opening),
+                                           family.starts):
+            walk.choices[step.index] = choice
+            grip = walk.grip_of(step)
+            q, res = walk.solve_ik(obj_pose @ transforms.pose_inverse(grip.matrix(t)))
+            clash = 0.0
+            if problem.checker is not None:
+                d = problem.checker.min_distance(q, moved, None, frozenset({step.obj}),
+                                                 static=False, horizon=margin)
+                clash = max(0.0, margin - d)
+            score = (res > walk.IK_TOLERANCE, round(clash, 3), 0 if walk.jitter else rank,
+                     float(np.linalg.norm(q - walk.q_prev)))
+            if best is None or score < best[0]:
+                best = (score, choice, t, q)
+        if best is not None and not best[0][0] and best[0][1] == 0.0 and not walk.jitter:
+            break
+    _, choice, t, q = best
+    return choice, t, q

@@ -66,10 +66,15 @@ class Place(ModeKind):
             q = walk.planar_q(np.array([x, y, step.rest_z]), grip, walk.grip[grasp.index])
             P = pose_matrix(x, y, step.rest_z, yaw)
         else:
-            hold = transforms.pose_inverse(grip.matrix(0.0))
+            held = grip.matrix(walk.grip.get(grasp.index, 0.0))
+            hold = transforms.pose_inverse(held)
+            # A quarter turn changes an oblong footprint: only the placement's
+            # own yaw and its half turn keep the final NLP's answer.
+            info = walk.problem.bodies[step.obj]
+            square = info.disk or abs(info.half[0] - info.half[1]) < REST_TOLERANCE
             targets = [(pose_matrix(x, y, step.rest_z, yaw + d) @ hold, yaw + d)
-                       for d in walk.QUARTERS]
-            q, yaw_ = walk.best_of(targets, (step.obj, grip.matrix(0.0)), {step.support})
+                       for d in (walk.QUARTERS if square else walk.QUARTERS[::2])]
+            q, yaw_ = walk.best_of(targets, (step.obj, held), {step.support})
             P = pose_matrix(x, y, step.rest_z, yaw_)
         walk.poses[step.obj] = P
         walk.q[k] = q
