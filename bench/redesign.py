@@ -8,10 +8,11 @@ keeps behaviour), the skeletons drawn, NLP solves, and the CPU seconds of the
 child process (less sensitive to other jobs than wall time), median of the
 runs; the ratio new/old of the median CPU seconds.
 
-    .venv/bin/python bench/redesign.py OLD_CHECKOUT [--runs 3] [--only SUBSTRING]
+    .venv/bin/python bench/redesign.py OLD_CHECKOUT [--new NEW_CHECKOUT] [--runs 3]
 
-OLD_CHECKOUT is a work tree of the old commit (`git worktree add --detach DIR
-COMMIT`); both sides run with this tree's interpreter and libraries.
+OLD_CHECKOUT (and NEW_CHECKOUT, default this tree) are work trees of the two
+commits (`git worktree add --detach DIR COMMIT`); both sides run with this
+tree's interpreter and libraries.
 """
 
 from __future__ import annotations
@@ -58,13 +59,14 @@ def solve(tree: Path, key: str, limit: float) -> dict:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("old", type=Path, help="a work tree of the old commit")
+    ap.add_argument("--new", type=Path, default=ROOT, help="a work tree of the new commit")
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--time-limit", type=float, default=300.0)
     ap.add_argument("--only", default="")
     args = ap.parse_args()
     old_commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=args.old,
                                 capture_output=True, text=True).stdout.strip()
-    new_commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=ROOT,
+    new_commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=args.new,
                                 capture_output=True, text=True).stdout.strip()
     rows = []
     for key in PROBLEMS:
@@ -73,7 +75,7 @@ def main() -> int:
         runs = {"old": [], "new": []}
         for _ in range(args.runs):
             runs["old"].append(solve(args.old, key, args.time_limit))
-            runs["new"].append(solve(ROOT, key, args.time_limit))
+            runs["new"].append(solve(args.new, key, args.time_limit))
         rows.append((key, runs))
         old_cpu = statistics.median(r["cpu"] for r in runs["old"])
         new_cpu = statistics.median(r["cpu"] for r in runs["new"])

@@ -30,7 +30,7 @@ import numpy as np
 from tampcli.geometry import transforms
 from tampcli.geometry.shapes import mesh_hulls
 from tampcli.optimize.kinds import KINDS
-from tampcli.render.replay import Replay
+from tampcli.render.replay import Replay, phase_label
 
 OVERLAP_NOTED = 0.001  # m: a deeper pass of the robot into an exempt object is reported
 
@@ -65,7 +65,7 @@ class PhaseDrift:
     """An object's drift from its planned pose at the end of phase `phase`."""
 
     phase: int  # index into the solution's phases
-    label: str  # the phase's action, or "move" / "carry NAME"
+    label: str  # the phase's caption (replay.phase_label)
     distance: float  # m
     angle_deg: float
 
@@ -378,10 +378,7 @@ class _Run:
                 entry[3] = depth
 
     def _label(self, k: int) -> str:
-        phase = self.solution.phases[k]
-        if phase.action is not None:
-            return phase.action
-        return f"carry {phase.attached}" if phase.attached is not None else "move"
+        return phase_label(self.solution.phases[k])
 
     def _record(self, k: int) -> None:
         for name, poses in self.solution.objects.items():

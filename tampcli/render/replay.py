@@ -58,6 +58,13 @@ class _Item:
     duration: float
 
 
+def phase_label(phase) -> str:
+    """The caption of a phase: its action, or the motion it is (label: free or carrying)."""
+    if phase.action is not None:
+        return phase.action
+    return f"carry {phase.attached}" if phase.attached is not None else "move"  # label
+
+
 def schema_of(action: str) -> str:
     """`"(pick a table)"` -> `"pick"` (plan_text.parse_step reads it)."""
     return parse_step(action).action
@@ -229,13 +236,8 @@ class Replay:
         # Held in a grasp (fingers closed), as opposed to pushed along.
         held = phase.attached if phase.attached is not None and self._closed_before[k] and \
             not after and (self._kinds[k] is None or self._kinds[k].holds) else None
-        if phase.action is not None:
-            label = phase.action
-        elif phase.attached is not None:
-            label = f"carry {phase.attached}"
-        else:
-            label = "move"
-        return FrameState(t, tuple(q), poses, closed, label, self._step[k], self.steps, held)
+        return FrameState(t, tuple(q), poses, closed, phase_label(phase), self._step[k],
+                          self.steps, held)
 
     def _resting(self, boundary: int) -> dict:
         return {name: poses[min(boundary, len(poses) - 1)].copy()
