@@ -50,7 +50,7 @@ class FrameRenderer:
 
     def render(self, state: FrameState) -> np.ndarray:
         self.world.set_state(np.asarray(state.q), state.poses,
-                             fingers_closed=state.fingers_closed)
+                             fingers_closed=state.fingers_closed, fingers=state.fingers)
         cam = self.job.camera
         image = self.world.camera_image(self.job.width, self.job.height, cam.eye, cam.target,
                                         up=cam.up, fov=cam.fov)

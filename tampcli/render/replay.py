@@ -17,6 +17,7 @@ needs no simulator.
 from __future__ import annotations
 
 import bisect
+import dataclasses
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -46,6 +47,7 @@ class FrameState:
     step: int
     steps: int
     held: str | None = None  # the object carried in a grasp (not a pushed one)
+    fingers: tuple[float, ...] | None = None  # each finger joint's value, when the file gives
 
 
 @dataclass(frozen=True)
@@ -76,11 +78,14 @@ class Replay:
     def __init__(self, solution: Solution, tool_pose: Callable[[np.ndarray], np.ndarray],
                  *, mode_kind: Callable[[str], str | None] | None = None,
                  duration: float | None = None, speed: float | None = None,
-                 pause: float = 0.4):
+                 pause: float = 0.4, fingers=None):
+        """`fingers`: per waypoint, each finger joint's value (a solution file's finger
+        columns); they override the open/closed rule of the actions."""
         if not solution.trajectory:
             raise ValueError("a replay needs a trajectory")
         self.solution = solution
         self.q = np.asarray(solution.trajectory, dtype=float)
+        self._fingers = None if fingers is None else np.asarray(fingers, dtype=float)
         self.phases = solution.phases
         mode_kind = mode_kind or (lambda action: None)
         # Per phase: its action's kind (optimize.kinds); None for a motion or
@@ -190,16 +195,26 @@ class Replay:
         alpha = 0.0 if item.duration == 0 else min(max((t - start) / item.duration, 0.0), 1.0)
         if item.moving:
             q = (1.0 - alpha) * self.q[item.index] + alpha * self.q[item.index + 1]
-            return self._state(t, q, item.phase, after=False)
+            return self._with_fingers(self._state(t, q, item.phase, after=False), item.index,
+                                      alpha)
         # An instantaneous action switches half-way through its pause; the
         # pause before a push shows its start.
         switches = 0 <= item.phase < len(self.phases) and \
             self.phases[item.phase].start == self.phases[item.phase].end
-        return self._state(t, self.q[item.index], item.phase, after=switches and alpha >= 0.5)
+        state = self._state(t, self.q[item.index], item.phase, after=switches and alpha >= 0.5)
+        return self._with_fingers(state, item.index, 0.0)
+
+    def _with_fingers(self, state: FrameState, index: int, alpha: float) -> FrameState:
+        if self._fingers is None:
+            return state
+        f = self._fingers[index] if alpha == 0.0 else \
+            (1.0 - alpha) * self._fingers[index] + alpha * self._fingers[index + 1]
+        return dataclasses.replace(state, fingers=tuple(float(v) for v in f))
 
     def keyframes(self) -> list[FrameState]:
         """The state just after each geometric action: one strip panel each."""
-        return [self._state(0.0, self.q[phase.end], k, after=True)
+        return [self._with_fingers(self._state(0.0, self.q[phase.end], k, after=True),
+                                   phase.end, 0.0)
                 for k, phase in enumerate(self.phases)
                 if phase.action is not None and self.is_geometric(k)]
 

@@ -40,7 +40,8 @@ def visible_points(world, states, samples: int = 12) -> np.ndarray:
     points = []
     for i in picks:
         state = states[i]
-        world.set_state(np.asarray(state.q), state.poses, fingers_closed=state.fingers_closed)
+        world.set_state(np.asarray(state.q), state.poses, fingers_closed=state.fingers_closed,
+                        fingers=state.fingers)
         for lo, hi in world.part_boxes():
             points.append(box_corners(lo, hi))
     return np.concatenate(points)

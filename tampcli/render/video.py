@@ -93,7 +93,8 @@ def _plan(inputs, world, options: RenderOptions):
     """Check the solution against the World, then time it and place the camera."""
     check_against_world(inputs, world)
     replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind_of(inputs.modes),
-                    duration=options.duration, speed=options.speed, pause=options.pause)
+                    duration=options.duration, speed=options.speed, pause=options.pause,
+                    fingers=inputs.file.fingers if inputs.file is not None else None)
     points = None
     if inputs.scene.camera is None:
         points = visible_points(world, replay.states(min(options.fps, 4.0)))

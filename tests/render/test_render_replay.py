@@ -154,3 +154,27 @@ def test_ending_on_an_instantaneous_action(panda):
     replay = Replay(cut, world.tool_pose, duration=2.0)
     assert not replay.state_at(replay.duration).fingers_closed
     assert any(s.fingers_closed for s in replay.states(10))
+
+
+def test_finger_columns_of_a_file_drive_the_fingers(panda):
+    sol, world = panda
+    n = len(sol.trajectory)
+    fingers = [(0.04 - 0.03 * i / (n - 1), 0.01 + 0.02 * i / (n - 1)) for i in range(n)]
+    replay = Replay(sol, world.tool_pose, duration=2.0, pause=0.0, fingers=fingers)
+    states = replay.states(20)
+    assert states[0].fingers == pytest.approx(fingers[0])
+    assert states[-1].fingers == pytest.approx(fingers[-1])
+    moving = next(s for s in states if not np.allclose(s.q, sol.trajectory[0]))
+    assert fingers[-1][0] <= moving.fingers[0] <= fingers[0][0]  # interpolated, in range
+    assert all(k.fingers is not None for k in replay.keyframes())
+    assert Replay(sol, world.tool_pose).states(5)[0].fingers is None  # the rule decides
+
+
+def test_world_sets_the_fingers_it_is_given(panda):
+    from tests.geometry.worlds import simulator
+
+    sol, world = panda
+    world.set_state(np.asarray(sol.trajectory[0]), fingers=(0.012, 0.031))
+    sim = simulator(world)
+    got = [sim.pb.getJointState(sim.robot, j, physicsClientId=sim.client)[0] for j in sim.fingers]
+    assert got == pytest.approx([0.012, 0.031])

@@ -259,12 +259,13 @@ class World:
             self._pb.resetJointState(self._robot, j, float(v), physicsClientId=self._client)
 
     def set_state(self, q, body_poses: dict | None = None, fingers_closed: bool = False,
-                  finger_opening: float | None = None) -> None:
+                  finger_opening: float | None = None, fingers=None) -> None:
         """Move the robot and bodies in the simulator (for replay only).
 
-        Fingers: open; or closed, to `finger_opening` (the value of every
-        finger joint named in the scene) when given, else until they touch a
-        movable body between them (fully closed when none is).
+        Fingers: `fingers`, each finger joint's value, when given (a solution
+        file's finger columns); else open; or closed, to `finger_opening` (the
+        value of every finger joint named in the scene) when given, else until
+        they touch a movable body between them (fully closed when none is).
         """
         self._set_joints(np.asarray(q, dtype=float))
         for name, t in (body_poses or {}).items():
@@ -275,6 +276,9 @@ class World:
                 self._bodies[name], t[:3, 3], transforms.matrix_to_quat(t[:3, :3]),
                 physicsClientId=self._client)
         if self._fingers is None:
+            return
+        if fingers is not None:
+            self._set_fingers(tuple(float(v) for v in fingers))
             return
         self._set_fingers(self._fingers.open)
         if not fingers_closed:
