@@ -21,6 +21,7 @@ class GripChoice:
     psi: float | None = None  # arm top grasp: object yaw minus tool yaw
     z: float | None = None  # planar: height of the object's centre while it is held
     yaw: float | None = None  # planar: the object's yaw while it is held (the disk cannot turn)
+    face: float | None = None  # push: the contacted face (push_contact.Face.angle)
 
 
 NO_CHOICE = GripChoice()
