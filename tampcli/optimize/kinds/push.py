@@ -71,10 +71,12 @@ class Push(ModeKind):
                                 f"{lo.regions[to].on}: a push slides on one support")
         if lo.stacked_on(obj):
             raise LoweringError(f"{label}: {obj} is under another object")
-        k0 = lo.motion(index, "free", None, None, {obj})
+        # The pusher only touches the face (it stops CONTACT_GAP short): the way to it
+        # and the way away from it are held clear of the object like any body.
+        k0 = lo.motion(index, "free", None, None, set())
         lo.last_contact = frozenset({below})
         k1 = lo.motion(index, "push", obj, index, set(), {below}, own=True, pushes=True)
-        lo.last_contact = frozenset({obj})
+        lo.last_contact = frozenset()
         lo.grip_params.append(index)
         return Step(index, op.name, self, obj, to, below, None, None, index, (k0, k1),
                     lo.rest_z[obj])
