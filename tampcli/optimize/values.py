@@ -22,6 +22,7 @@ class GripChoice:
     z: float | None = None  # planar: height of the object's centre while it is held
     yaw: float | None = None  # planar: the object's yaw while it is held (the disk cannot turn)
     face: float | None = None  # push: the contacted face (push_contact.Face.angle)
+    reach: float | None = None  # push (arm): tool origin to the object's centre, measured
 
 
 NO_CHOICE = GripChoice()

@@ -22,8 +22,9 @@ from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import TOUCH_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
 from tampcli.optimize.kinds.base import ModeKind
-from tampcli.optimize.kinds.push_check import check_push
+from tampcli.optimize.kinds.push_check import check_push, clearance
 from tampcli.optimize.kinds.push_contact import (
+    CONTACT_GAP,
     PUSH_FRICTION,
     arm_face_grip,
     candidate_faces,
@@ -37,6 +38,8 @@ from tampcli.optimize.layout import grip_block
 from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
+MEASURE_LIMIT = 0.01  # m: the measured touch corrects the nominal reach by at most this
+
 
 def face_grip(problem, step, choice):
     """The grip of a push whose face is `choice.face` (planar: at choice.z, choice.yaw)."""
@@ -47,7 +50,7 @@ def face_grip(problem, step, choice):
         z = choice.z if choice.z is not None else info.pose[2]
         yaw = choice.yaw if choice.yaw is not None else info.pose[3]
         return planar_face_grip(face, yaw, z - float(robot.base_pose[2, 3]), robot.radius)
-    return arm_face_grip(face)
+    return arm_face_grip(face, choice.reach)
 
 
 class Push(ModeKind):
@@ -117,7 +120,14 @@ class Push(ModeKind):
             targets = [(obj_pose @ transforms.pose_inverse(
                 face_grip(problem, step, GripChoice(face=a)).matrix(0.0)), a) for a in aligned]
             q0, face = walk.best_of(targets, ignore={step.obj})
-            walk.choices[step.index] = GripChoice(face=face)
+            # Touch, measured: the fingers' extent behind the tool origin is the arm's.
+            nominal = face_grip(problem, step, GripChoice(face=face))
+            gap = clearance(problem, step.obj, obj_pose, q0) - CONTACT_GAP
+            reach = nominal.reach - float(np.clip(gap, -MEASURE_LIMIT, MEASURE_LIMIT))
+            walk.choices[step.index] = GripChoice(face=face, reach=reach)
+            walk.q_prev = q0
+            q0, _ = walk.best_of([(obj_pose @ transforms.pose_inverse(
+                walk.grip_of(step).matrix(0.0)), None)])
             G = transforms.pose_inverse(walk.grip_of(step).matrix(0.0))
             walk.q_prev = q0
             q1, _ = walk.best_of([(end @ G, None)])

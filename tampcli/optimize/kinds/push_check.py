@@ -5,7 +5,7 @@ the start of the pushing motion (push_contact.contacted_face); the pusher
 touches it (within the touch tolerance) without going into the object, also
 on the last segment of its approach (which the collision check leaves to the
 mode); every step of the object moves into that face within the friction
-cone; the object keeps its yaw, its height and stays upright throughout.
+cone; the object keeps its yaw (within TURN), its height and stays upright.
 """
 
 from __future__ import annotations
@@ -20,7 +20,10 @@ from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, contacted_face
 PENETRATION = 1e-3  # m: deeper than this into the object is more than touching
 SLACK = 1e-3  # of a step's length: rounding in the cone test
 STILL = 1e-6  # m: shorter steps have no direction
-TURN = 2e-3  # rad: the pushed object's yaw may drift this much
+# rad: the object turns with the hand at most this much between the keyframes (which
+# hold its yaw exactly): the arm's two fingers touch the face along a line and can
+# carry the moment of such a turn; the planar disk cannot turn at all.
+TURN = math.radians(2.0)
 LIFT = 1e-3  # m and 1 - cos(tilt): the pushed object keeps its height and stays upright
 APPROACH_SAMPLES = 10  # points on the approach's last segment
 
@@ -37,13 +40,13 @@ def check_push(walk, step, touch: float) -> list[str]:
     rel = (transforms.pose_inverse(before) @ tools[0])[:3, 3]
     face = contacted_face(info, rel)
     out = []
-    gap = _clearance(problem, obj, before, walk.traj[start:start + 1])
+    gap = clearance(problem, obj, before, walk.traj[start:start + 1])
     if gap > touch:
         out.append(f"{name}: the push starts {100 * gap:.1f} cm away from {obj}")
     if start > 0:
         s = np.linspace(0.0, 1.0, APPROACH_SAMPLES + 1)[:, None]
         qs = (1 - s) * walk.traj[start - 1] + s * walk.traj[start]
-        gap = min(gap, _clearance(problem, obj, before, qs))
+        gap = min(gap, clearance(problem, obj, before, qs))
     if gap < -PENETRATION:
         out.append(f"{name}: the pusher is {1000 * -gap:.1f} mm inside {obj}")
     n = before[:3, :3] @ face.normal
@@ -71,8 +74,9 @@ def check_push(walk, step, touch: float) -> list[str]:
     return out
 
 
-def _clearance(problem, obj: str, pose, qs) -> float:
-    """Smallest signed distance between the robot and `obj` (at `pose`) over qs."""
+def clearance(problem, obj: str, pose, qs) -> float:
+    """Smallest signed distance between the robot and `obj` (at `pose`) over the rows
+    of qs (at most 5 cm: farther counts as 5 cm)."""
     horizon = 0.05
     others = frozenset(n for n in problem.bodies if n != obj)
     found = problem.checker.distances_many(np.atleast_2d(qs), {obj: pose}, None,

@@ -106,13 +106,19 @@ def planar_face_grip(face: Face, yaw: float, dz: float, radius: float) -> FaceGr
                     tuple(R @ face.tangent), face.depth + radius + CONTACT_GAP)
 
 
-def arm_face_grip(face: Face) -> FaceGrip:
+def arm_face_grip(face: Face, reach: float | None = None) -> FaceGrip:
     """The arm's tool pointing down, its x axis out of the face: the open fingers'
-    side (spread along the tool's y, along the face) against it, at the centre's height."""
+    side (spread along the tool's y, along the face) against it, at the centre's height.
+
+    `reach`: tool origin to the object's centre as measured on the arm's own
+    collision shapes (see push.py's guess); by default the Panda's fingers.
+    """
     tool_in_obj = np.column_stack([-face.normal, face.tangent, [0.0, 0.0, -1.0]])
     G = tool_in_obj.T
+    if reach is None:
+        reach = face.depth + PANDA_FINGER_HALF + CONTACT_GAP
     return FaceGrip((0.0, 0.0, 0.0), tuple(map(tuple, G)), tuple(G @ face.normal),
-                    tuple(G @ face.tangent), face.depth + PANDA_FINGER_HALF + CONTACT_GAP)
+                    tuple(G @ face.tangent), reach)
 
 
 # ---------------------------------------------------------------- rows
