@@ -21,6 +21,7 @@ from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import TOUCH_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
+from tampcli.optimize.grips import held_pose
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.kinds.push_check import check_push, clearance
 from tampcli.optimize.kinds.push_contact import (
@@ -31,10 +32,11 @@ from tampcli.optimize.kinds.push_contact import (
     cone_rows,
     face_of,
     offset_rows,
+    path_rows,
     planar_face_grip,
     same_yaw,
 )
-from tampcli.optimize.layout import grip_block
+from tampcli.optimize.layout import grip_block, waypoint_block
 from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
@@ -158,6 +160,16 @@ class Push(ModeKind):
         walk.placement_rows(step, H1)
         walk.collide(k1, step, held_of(step.obj, grip, t, t_block), frame, {step.support})
         walk.state[step.obj] = H1
+
+    def path_rows(self, rows, label, problem, qs, held, kin) -> None:
+        """Rows of the path NLP for the pushing motion through configurations qs
+        (T + 1 of them, the fixed keyframes at both ends): the push rule at every
+        step (push_contact.path_rows). `held`: collide.Held, the object on its
+        FaceGrip; `kin`: grips.Kinematics. For path.py's phase_rows_fn."""
+        T = len(qs) - 1
+        poses = [held_pose(kin.frame(q), held.grip, held.t) for q in qs]
+        blocks = [waypoint_block(i) if 0 < i < T else None for i in range(T + 1)]
+        path_rows(rows, label, poses, blocks, held.grip, problem.planar)
 
     def switch(self, walk, step):
         walk.release(step.obj)

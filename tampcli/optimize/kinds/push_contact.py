@@ -165,23 +165,35 @@ def offset_rows(rows: RowSet, step: str, t: float, t_block: str, face: Face) -> 
              Label(step, "contact off the middle of the pushed face"))
 
 
-def path_rows(rows: RowSet, step: str, positions, jacobians, blocks, normal, tangent,
+def path_rows(rows: RowSet, step: str, poses, blocks, grip: FaceGrip, planar: bool,
               mu: float = PUSH_FRICTION) -> None:
-    """Cone rows between consecutive waypoints of the pushing motion.
+    """The push rule between consecutive waypoints of the pushing motion.
 
-    `positions[i]` (3,) and `jacobians[i]` (3, n): the object's centre and its
-    d/dq at waypoint i; `blocks[i]`: that waypoint's block (None: fixed);
-    `normal`, `tangent`: the face's, in the world (constant: yaw fixed).
+    `poses[i]`: the object's grips.HeldPose at waypoint i (all of them, the
+    fixed keyframes at both ends included); `blocks[i]`: that waypoint's block
+    (None: fixed). Cone rows for every step, with the face's normal and
+    tangent where the push starts (the object does not turn); for the arm,
+    the yaw of every waypoint equal to the first's.
     """
-    n, e = np.asarray(normal), np.asarray(tangent)
-    for i in range(len(positions) - 1):
-        d = positions[i + 1] - positions[i]
+    R0 = poses[0].axes @ np.array(grip.axes)
+    n, e = R0 @ np.array(grip.normal), R0 @ np.array(grip.tangent)
+    label = Label(step, "motion not into the pushed face (a drag)")
+    for i in range(len(poses) - 1):
+        d = poses[i + 1].pos - poses[i].pos
         for sign in (-1.0, 1.0):
             w = mu * n + sign * e
             jac = {}
-            for b, J, side in ((blocks[i + 1], jacobians[i + 1], 1.0),
-                               (blocks[i], jacobians[i], -1.0)):
+            for b, h, side in ((blocks[i + 1], poses[i + 1], 1.0), (blocks[i], poses[i], -1.0)):
                 if b is not None:
-                    jac = add_jac(jac, {b: side * (w @ J)[None, :]})
-            rows.add(np.array([float(w @ d)]), jac,
-                     Label(step, "motion not into the pushed face (a drag)"))
+                    jac = add_jac(jac, {b: side * (w @ h.dpos_dq)[None, :]})
+            rows.add(np.array([float(w @ d)]), jac, label)
+    if planar:
+        return
+    a0 = poses[0].axes[:, 0]
+    for h, b in zip(poses, blocks, strict=True):
+        if b is None:
+            continue
+        a, da = h.axes[:, 0], h.daxes_dq[:, 0, :]
+        rows.add(np.array([a0[0] * a[1] - a0[1] * a[0]]),
+                 {b: (a0[0] * da[1] - a0[1] * da[0])[None, :]},
+                 Label(step, "pushed object turns", "rad"))
