@@ -143,7 +143,7 @@ def _path_rows_check(problem, world, held, q_a, q_b, T=4, seed=0):
     def rows_of(v):
         rows = Rows()
         qs = [q_a, *(v[waypoint_block(i)] for i in range(1, T)), q_b]
-        Push().path_rows(rows.ineq, "push", problem, qs, held, kin)
+        Push().path_rows(rows, "push", problem, qs, held, kin)
         return rows
 
     _check(rows_of, layout, x)
@@ -171,8 +171,9 @@ def test_path_rows_panda(wall):
 
     ctx = walk(problem, vals, choices, world.start)[1]
     rows = _path_rows_check(problem, world, ctx.held, ctx.q_a, ctx.q_b)
-    labels = {lab.what for lab in rows.ineq.labels}
-    assert labels == {"motion not into the pushed face (a drag)", "pushed object turns"}
+    assert {lab.what for lab in rows.ineq.labels} == {"motion not into the pushed face (a drag)"}
+    assert {lab.what for lab in rows.eq.labels} == {"pushed object turns"}
+    assert len(rows.eq.values) == 3  # one per interior waypoint
 
 
 def test_same_yaw_and_cone_rows_on_poses():

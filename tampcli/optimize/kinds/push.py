@@ -162,14 +162,14 @@ class Push(ModeKind):
         walk.state[step.obj] = H1
 
     def path_rows(self, rows, label, problem, qs, held, kin) -> None:
-        """Rows of the path NLP for the pushing motion through configurations qs
-        (T + 1 of them, the fixed keyframes at both ends): the push rule at every
-        step (push_contact.path_rows). `held`: collide.Held, the object on its
-        FaceGrip; `kin`: grips.Kinematics. For path.py's phase_rows_fn."""
+        """Rows (stages.Rows) of the path NLP for the pushing motion through
+        configurations qs (T + 1 of them, the fixed keyframes at both ends): the push
+        rule at every step (push_contact.path_rows). `held`: collide.Held, the object
+        on its FaceGrip; `kin`: grips.Kinematics. For path.py's phase_rows_fn."""
         T = len(qs) - 1
         poses = [held_pose(kin.frame(q), held.grip, held.t) for q in qs]
         blocks = [waypoint_block(i) if 0 < i < T else None for i in range(T + 1)]
-        path_rows(rows, label, poses, blocks, held.grip, problem.planar)
+        path_rows(rows.ineq, rows.eq, label, poses, blocks, held.grip, problem.planar)
 
     def switch(self, walk, step):
         walk.release(step.obj)

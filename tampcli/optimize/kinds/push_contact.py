@@ -165,8 +165,8 @@ def offset_rows(rows: RowSet, step: str, t: float, t_block: str, face: Face) -> 
              Label(step, "contact off the middle of the pushed face"))
 
 
-def path_rows(rows: RowSet, step: str, poses, blocks, grip: FaceGrip, planar: bool,
-              mu: float = PUSH_FRICTION) -> None:
+def path_rows(ineq: RowSet, eq: RowSet, step: str, poses, blocks, grip: FaceGrip,
+              planar: bool, mu: float = PUSH_FRICTION) -> None:
     """The push rule between consecutive waypoints of the pushing motion.
 
     `poses[i]`: the object's grips.HeldPose at waypoint i (all of them, the
@@ -186,7 +186,7 @@ def path_rows(rows: RowSet, step: str, poses, blocks, grip: FaceGrip, planar: bo
             for b, h, side in ((blocks[i + 1], poses[i + 1], 1.0), (blocks[i], poses[i], -1.0)):
                 if b is not None:
                     jac = add_jac(jac, {b: side * (w @ h.dpos_dq)[None, :]})
-            rows.add(np.array([float(w @ d)]), jac, label)
+            ineq.add(np.array([float(w @ d)]), jac, label)
     if planar:
         return
     a0 = poses[0].axes[:, 0]
@@ -194,6 +194,6 @@ def path_rows(rows: RowSet, step: str, poses, blocks, grip: FaceGrip, planar: bo
         if b is None:
             continue
         a, da = h.axes[:, 0], h.daxes_dq[:, 0, :]
-        rows.add(np.array([a0[0] * a[1] - a0[1] * a[0]]),
-                 {b: (a0[0] * da[1] - a0[1] * da[0])[None, :]},
-                 Label(step, "pushed object turns", "rad"))
+        eq.add(np.array([a0[0] * a[1] - a0[1] * a[0]]),
+               {b: (a0[0] * da[1] - a0[1] * da[0])[None, :]},
+               Label(step, "pushed object turns", "rad"))
