@@ -23,6 +23,7 @@ class GripChoice:
     yaw: float | None = None  # planar: the object's yaw while it is held (the disk cannot turn)
     face: float | None = None  # push: the contacted face (push_contact.Face.angle)
     reach: float | None = None  # push (arm): tool origin to the object's centre, measured
+    level: bool = False  # push (arm): the hand level, its fingertips against the face
 
 
 NO_CHOICE = GripChoice()

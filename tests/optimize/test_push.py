@@ -22,6 +22,8 @@ from tampcli.optimize.kinds.push_contact import (
     candidate_faces,
     contacted_face,
     face_of,
+    level_face_grip,
+    level_lift,
     planar_face_grip,
 )
 from tampcli.optimize.layout import Layout, waypoint_block
@@ -81,21 +83,36 @@ def test_faces_are_named_by_their_inward_normal():
     assert candidate_faces(disk, (1.0, 1.0)) == [pytest.approx(0.25 * math.pi)]
 
 
-@pytest.mark.parametrize("grip", [
-    planar_face_grip(face_of(BOX, 0.5 * math.pi), 0.3, -0.01, 0.05),
-    arm_face_grip(face_of(BOX, math.pi)),
-], ids=["planar", "arm"])
-def test_face_grip_offset_derivative_and_touch(grip):
+@pytest.mark.parametrize("grip, face, tool_z", [
+    (planar_face_grip(face_of(BOX, 0.5 * math.pi), 0.3, -0.01, 0.05),
+     face_of(BOX, 0.5 * math.pi), (0.0, 0.0, 1.0)),
+    (arm_face_grip(face_of(BOX, math.pi)), face_of(BOX, math.pi), (0.0, 0.0, -1.0)),
+    (level_face_grip(face_of(BOX, 0.0), 0.015), face_of(BOX, 0.0), (1.0, 0.0, 0.0)),
+], ids=["planar", "arm-down", "arm-level"])
+def test_face_grip_offset_derivative_and_touch(grip, face, tool_z):
     t = 0.013
     c, G, dc, dG = grip.parts(t)
     fd = (grip.parts(t + 1e-6)[0] - grip.parts(t - 1e-6)[0]) / 2e-6
     np.testing.assert_allclose(dc, fd, atol=1e-8)
     np.testing.assert_allclose(G @ G.T, np.eye(3), atol=1e-12)
-    # The tool origin, seen from the object, lies outside the pushed face, offset t along it.
+    # The tool origin, seen from the object, lies outside the pushed face, offset t along
+    # it; the tool's z axis (object frame) points down, or level into the face.
     local = -G.T @ c
-    face = face_of(BOX, 0.5 * math.pi if np.allclose(G[2], [0, 0, 1]) else math.pi)
     assert local @ face.normal < -face.depth
     assert local @ face.tangent == pytest.approx(t)
+    np.testing.assert_allclose(G.T[:, 2], tool_z, atol=1e-12)
+
+
+def test_a_level_hand_runs_above_the_support_and_below_the_top():
+    tall = dataclasses.replace(BOX, half=(0.06, 0.04, 0.04))
+    lift = level_lift(tall)
+    assert lift == pytest.approx(0.005)  # its axis 4.5 cm above the support
+    grip = level_face_grip(face_of(tall, 0.0), lift)
+    c, G, _, _ = grip.parts(0.0)
+    assert (-G.T @ c)[2] == pytest.approx(lift)
+    assert level_lift(BOX) == pytest.approx(0.015)  # 6 cm tall: the axis 1 cm below its top
+    flat = dataclasses.replace(BOX, half=(0.06, 0.06, 0.02))  # robust-arm p09's crate
+    assert level_lift(flat) is None  # too low for the hand to clear the support
 
 
 # ---------------------------------------------------------------- gradients

@@ -8,11 +8,13 @@ The face is a discrete choice of the initial guess (the faces best aligned
 with the displacement first; for the arm the first one with a collision-free
 IK solution); the contact point's offset along the face is the step's grip
 parameter. The planar disk touches the face with its rim; the arm with the
-side of its open fingers, the hand pointing down.
+side of its open fingers, the hand pointing down, or, where the hand cannot
+come from above (a low ceiling), with its fingertips, the hand level.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -31,6 +33,8 @@ from tampcli.optimize.kinds.push_contact import (
     candidate_faces,
     cone_rows,
     face_of,
+    level_face_grip,
+    level_lift,
     offset_rows,
     path_rows,
     planar_face_grip,
@@ -52,6 +56,8 @@ def face_grip(problem, step, choice):
         z = choice.z if choice.z is not None else info.pose[2]
         yaw = choice.yaw if choice.yaw is not None else info.pose[3]
         return planar_face_grip(face, yaw, z - float(robot.base_pose[2, 3]), robot.radius)
+    if choice.level:
+        return level_face_grip(face, level_lift(info), choice.reach)
     return arm_face_grip(face, choice.reach)
 
 
@@ -119,14 +125,18 @@ class Push(ModeKind):
             cone = math.cos(math.atan(PUSH_FRICTION))
             aligned = [a for a in faces if math.cos(a) * u[0] + math.sin(a) * u[1]
                        >= cone * np.linalg.norm(u)] or faces[:1]
+            # The hand down (its fingers' side on the face) first; level (its
+            # fingertips on the face) where the object is tall enough for it.
+            levels = (False, True) if level_lift(info) is not None else (False,)
+            choices = [GripChoice(face=a, level=level) for level in levels for a in aligned]
             targets = [(obj_pose @ transforms.pose_inverse(
-                face_grip(problem, step, GripChoice(face=a)).matrix(0.0)), a) for a in aligned]
-            q0, face = walk.best_of(targets, ignore={step.obj})
+                face_grip(problem, step, c).matrix(0.0)), c) for c in choices]
+            q0, choice = walk.best_of(targets, ignore={step.obj})
             # Touch, measured: the fingers' extent behind the tool origin is the arm's.
-            nominal = face_grip(problem, step, GripChoice(face=face))
+            nominal = face_grip(problem, step, choice)
             gap = clearance(problem, step.obj, obj_pose, q0) - CONTACT_GAP
             reach = nominal.reach - float(np.clip(gap, -MEASURE_LIMIT, MEASURE_LIMIT))
-            walk.choices[step.index] = GripChoice(face=face, reach=reach)
+            walk.choices[step.index] = dataclasses.replace(choice, reach=reach)
             walk.q_prev = q0
             q0, _ = walk.best_of([(obj_pose @ transforms.pose_inverse(
                 walk.grip_of(step).matrix(0.0)), None)])

@@ -25,11 +25,14 @@ import numpy as np
 
 from tampcli.optimize.expr import Label, PoseX, RowSet, add_jac
 from tampcli.optimize.grips import Grip
+from tampcli.optimize.kinds.grasp import PANDA_FINGERTIP
 
 PUSH_FRICTION = 0.5  # pusher on object; half-angle of the cone atan(0.5) = 26.6 deg
 OFFSET_FRACTION = 0.5  # the contact point stays in the middle half of the face
 CONTACT_GAP = 5e-4  # m: pusher to face when touching (verify allows 1 mm in, 2 mm out)
 PANDA_FINGER_HALF = 0.0131  # m: tool origin to the open fingers' outer side (collision mesh)
+PANDA_FINGERTIP_HALF = 0.01  # m: a fingertip's half width, across the tool's y axis
+LEVEL_CLEARANCE = 0.045  # m: a level hand's axis above the support (half the hand, 1 cm)
 BOX_FACES = (0.0, 0.5 * math.pi, math.pi, -0.5 * math.pi)
 
 
@@ -119,6 +122,26 @@ def arm_face_grip(face: Face, reach: float | None = None) -> FaceGrip:
         reach = face.depth + PANDA_FINGER_HALF + CONTACT_GAP
     return FaceGrip((0.0, 0.0, 0.0), tuple(map(tuple, G)), tuple(G @ face.normal),
                     tuple(G @ face.tangent), reach)
+
+
+def level_lift(info) -> float | None:
+    """How far above the object's centre a level hand's axis runs: high enough for the
+    hand to clear the support, low enough for the fingertips to meet the face; None
+    when the object is too low for both."""
+    need = LEVEL_CLEARANCE - info.half[2]
+    most = info.half[2] - PANDA_FINGERTIP_HALF
+    return max(need, 0.0) if need <= most else None
+
+
+def level_face_grip(face: Face, lift: float, reach: float | None = None) -> FaceGrip:
+    """The arm's hand level, its tool z axis into the face and the fingers spread along
+    it: the fingertips push (under a low ceiling). The tool's x axis points down."""
+    tool_in_obj = np.column_stack([[0.0, 0.0, -1.0], face.tangent, face.normal])
+    G = tool_in_obj.T
+    if reach is None:
+        reach = face.depth + PANDA_FINGERTIP + CONTACT_GAP
+    return FaceGrip(tuple(G @ np.array([0.0, 0.0, -lift])), tuple(map(tuple, G)),
+                    tuple(G @ face.normal), tuple(G @ face.tangent), reach)
 
 
 # ---------------------------------------------------------------- rows
