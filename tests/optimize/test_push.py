@@ -151,6 +151,31 @@ def test_keyframe_rows_hold_the_cone(planar):
                                    world.start, collisions=False), layout, x)
 
 
+def test_keyframe_rows_panda_level_push(wall):
+    """The level hand's grip through the keyframe rows (the wall scene's cube made 8 cm
+    tall, standing on the floor as before)."""
+    from tampcli.geometry.world import World
+    from tampcli.optimize.modes import Mode
+    from tampcli.optimize.stages import keyframe_layout, keyframe_rows
+
+    scene, _, _ = wall
+    tall = dataclasses.replace(scene, bodies=tuple(
+        dataclasses.replace(b, size=(0.05, 0.05, 0.08), pose=(*b.pose[:2], 0.04, *b.pose[3:]))
+        if b.name == "a" else b for b in scene.bodies))
+    modes = {"push": Mode("push", "push", "?b", to="?to", params=("?b", "?from", "?to"))}
+    with World(tall) as world:
+        problem = lower(ops("(push a start goal)"), tall, modes, world)
+        placements, _ = final_guess(problem)
+        vals, choices = keyframe_guess(problem, placements, world.start,
+                                       np.random.default_rng(0))
+        choices = {0: dataclasses.replace(choices[0], level=True, reach=None)}
+        layout = keyframe_layout(problem)
+        x = layout.pack(vals.blocks()) + np.random.default_rng(6).normal(0, 0.03, layout.size)
+        _check(lambda v: keyframe_rows(problem, v, choices, Kinematics(world),
+                                       problem.checker, world.start, collisions=False),
+               layout, x)
+
+
 def _path_rows_check(problem, world, held, q_a, q_b, T=4, seed=0):
     kin = Kinematics(world)
     layout = Layout(tuple((waypoint_block(i), problem.n) for i in range(1, T)))

@@ -57,7 +57,10 @@ def face_grip(problem, step, choice):
         yaw = choice.yaw if choice.yaw is not None else info.pose[3]
         return planar_face_grip(face, yaw, z - float(robot.base_pose[2, 3]), robot.radius)
     if choice.level:
-        return level_face_grip(face, level_lift(info), choice.reach)
+        lift = level_lift(info)
+        if lift is None:
+            raise ValueError(f"{step.name}: {step.obj} is too low for a level hand")
+        return level_face_grip(face, lift, choice.reach)
     return arm_face_grip(face, choice.reach)
 
 
