@@ -87,4 +87,4 @@ def test_piped_output_is_plain_lines(cli, tmp_path):
     assert run.code == 0, run.err
     text = run.out + run.err
     assert not any(ch in text for ch in "┏┃━╇")
-    assert "(push" in run.out
+    assert "(pick box start)\n(place box goal)\n" in run.out  # the seed's push is a drag

@@ -54,7 +54,7 @@ EXPECTED = {
     "gripper/p01": (5, 5, None),
     "gripper/p02": (11, 11, None),
     "gripper/p03": (17, 17, None),
-    "planar-push/p01": (2, 1, 10),
+    "planar-push/p01": (2, 2, 10),
     "planar-push/p02": (4, 2, 10),
     "planar-push/p03": (2, 1, 10),
     "planar-tamp/p01": (4, 4, 10),

@@ -309,7 +309,13 @@ def _solve_phase(run: _Run, ctx, T, checks):
         return phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
                              run.checker, T, n_checks, ctx.rest_z, label, keep)
 
-    x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved, run.rng).reshape(-1)
+    if m.pushes:
+        # A push slides along its support in a straight line (a bend would be a drag):
+        # no lift above the obstacles, no detour around the object it pushes.
+        x0 = np.linspace(ctx.q_a, ctx.q_b, T + 1)[1:-1].reshape(-1)
+    else:
+        x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved,
+                        run.rng).reshape(-1)
     bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
                       strict=True))
     coarse, layout = rows(0)

@@ -24,6 +24,9 @@ class GripChoice:
     roll: float = 1.0  # arm side grasp: -1 turns the hand over about its approach
     z: float | None = None  # planar: height of the object's centre while it is held
     yaw: float | None = None  # planar: the object's yaw while it is held (the disk cannot turn)
+    face: float | None = None  # push: the contacted face (push_contact.Face.angle)
+    reach: float | None = None  # push (arm): tool origin to the object's centre, measured
+    level: bool = False  # push (arm): the hand level, its fingertips against the face
 
 
 NO_CHOICE = GripChoice()

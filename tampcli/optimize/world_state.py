@@ -22,7 +22,7 @@ def grip_of(problem, step, choices) -> Grip:
     """
     choice = choices.get(step.index, NO_CHOICE)
     info = problem.bodies[step.obj]
-    if problem.planar:
+    if problem.planar and not step.kind.planar_grip:
         base_z = float(problem.scene.robot.base_pose[2, 3])
         rho = problem.scene.robot.radius + max(info.half[0], info.half[1])
         z = choice.z if choice.z is not None else info.pose[2]

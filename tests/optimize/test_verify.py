@@ -79,16 +79,3 @@ def test_joint_limits_and_unmoved_objects(solved):
     poses["o"][1][1] += 0.05  # moved during the free approach, while nobody holds it
     moved = dataclasses.replace(result, object_poses=poses)
     assert any("moves but is not attached" in p for p in verify(problem, moved))
-
-
-def test_a_push_that_starts_away_from_the_object(planar):
-    scene, modes, world = planar
-    problem = lower(ops("(push o start goal floor)"), scene, modes, world)
-    result = solve(problem, "path")
-    assert result.solved and verify(problem, result) == []
-    push = result.phases[1]
-    assert push.action == "(push o start goal floor)" and push.attached == "o"
-    traj = np.array(result.trajectory)
-    traj[push.start] += np.array([0.0, -0.1])
-    problems = verify(problem, dataclasses.replace(result, trajectory=traj))
-    assert any("the push starts" in p and "away from o" in p for p in problems), problems

@@ -22,6 +22,7 @@ class ModeKind(ABC):
     places: bool = False  # leaves its object resting somewhere new: a block of the final NLP
     holds: bool = True  # replay: what is attached during its motions hangs in closed fingers
     fingers: bool | None = None  # replay: the fingers are closed after it (None: unchanged)
+    planar_grip: bool = False  # `grip` also says how the planar robot holds (a push's face)
 
     def __repr__(self) -> str:
         return self.name
@@ -34,7 +35,8 @@ class ModeKind(ABC):
     @abstractmethod
     def grip(self, problem, step, choice):
         """How the arm holds the step's object (grips.Grip); `choice` a values.GripChoice.
-        The planar robot's grip is one for every kind (world_state.grip_of)."""
+        The planar robot's grip is one for every kind (world_state.grip_of) unless
+        the kind sets `planar_grip`."""
 
     @abstractmethod
     def final_rows(self, walk, step) -> None:

@@ -1,14 +1,20 @@
-"""push: the tool slides the object along its support into a region.
+"""push: the tool slides the object along its support into a region, pushing one
+of its side faces (the contact model and the push rule: push_contact.py).
 
-Two motion phases: a free approach ending against the object, then the
+Two motion phases: a free approach ending against the chosen face, then the
 pushing motion itself (the object moves with the tool, upright at its resting
-height, allowed to touch its support). The arm pushes with its finger side at
-a yaw offset, the planar robot with its rim at a contact angle: either way one
-grip parameter of the keyframe NLP.
+height, without turning, and only into the face: within the friction cone).
+The face is a discrete choice of the initial guess (the faces best aligned
+with the displacement first; for the arm the first one with a collision-free
+IK solution); the contact point's offset along the face is the step's grip
+parameter. The planar disk touches the face with its rim; the arm with the
+side of its open fingers, the hand pointing down, or, where the hand cannot
+come from above (a low ceiling), with its fingertips, the hand level.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -17,12 +23,45 @@ from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import TOUCH_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
-from tampcli.optimize.grips import YawGrip
+from tampcli.optimize.grips import held_pose
 from tampcli.optimize.kinds.base import ModeKind
+from tampcli.optimize.kinds.push_check import check_push, clearance
+from tampcli.optimize.kinds.push_contact import (
+    CONTACT_GAP,
+    PUSH_FRICTION,
+    arm_face_grip,
+    candidate_faces,
+    cone_rows,
+    face_of,
+    level_face_grip,
+    level_lift,
+    offset_rows,
+    path_rows,
+    planar_face_grip,
+    same_yaw,
+)
+from tampcli.optimize.layout import grip_block, waypoint_block
 from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
-PUSH_STANDOFF = 0.012  # m, tool origin to the pushed face (finger half thickness)
+MEASURE_LIMIT = 0.01  # m: the measured touch corrects the nominal reach by at most this
+
+
+def face_grip(problem, step, choice):
+    """The grip of a push whose face is `choice.face` (planar: at choice.z, choice.yaw)."""
+    info = problem.bodies[step.obj]
+    face = face_of(info, choice.face if choice.face is not None else 0.0)
+    if problem.planar:
+        robot = problem.scene.robot
+        z = choice.z if choice.z is not None else info.pose[2]
+        yaw = choice.yaw if choice.yaw is not None else info.pose[3]
+        return planar_face_grip(face, yaw, z - float(robot.base_pose[2, 3]), robot.radius)
+    if choice.level:
+        lift = level_lift(info)
+        if lift is None:
+            raise ValueError(f"{step.name}: {step.obj} is too low for a level hand")
+        return level_face_grip(face, lift, choice.reach)
+    return arm_face_grip(face, choice.reach)
 
 
 class Push(ModeKind):
@@ -30,6 +69,7 @@ class Push(ModeKind):
     required = ("object", "to")
     places = True
     holds = False
+    planar_grip = True
 
     def lower(self, lo, index, op, mode):
         obj, _, to = lo.roles(op, mode)
@@ -45,50 +85,70 @@ class Push(ModeKind):
                                 f"{lo.regions[to].on}: a push slides on one support")
         if lo.stacked_on(obj):
             raise LoweringError(f"{label}: {obj} is under another object")
-        k0 = lo.motion(index, "free", None, None, {obj})
+        # The pusher only touches the face (it stops CONTACT_GAP short): the way to it
+        # and the way away from it are held clear of the object like any body.
+        k0 = lo.motion(index, "free", None, None, set())
         lo.last_contact = frozenset({below})
         k1 = lo.motion(index, "push", obj, index, set(), {below}, own=True, pushes=True)
-        lo.last_contact = frozenset({obj})
+        lo.last_contact = frozenset()
         lo.grip_params.append(index)
         return Step(index, op.name, self, obj, to, below, None, None, index, (k0, k1),
                     lo.rest_z[obj])
 
     def grip(self, problem, step, choice):
-        info = problem.bodies[step.obj]
-        rho = max(info.half[0], info.half[1]) + PUSH_STANDOFF
-        return YawGrip((-rho, 0.0, 0.0))
+        return face_grip(problem, step, choice)
 
     def final_rows(self, walk, step):
+        # The placement keeps the yaw the object has: a push does not turn it.
+        before = walk.state[step.obj]
         walk.place(step)
+        same_yaw(walk.rows.eq, step.name, before, walk.state[step.obj])
 
     def guess(self, walk, step):
         k0, k1 = step.keyframes
+        problem = walk.problem
+        info = problem.bodies[step.obj]
         obj_pose = walk.poses[step.obj]
         p = walk.placements[step.index]
-        x, y = p.x, p.y
-        u = np.array([x, y]) - obj_pose[:2, 3]
-        u = u / np.linalg.norm(u) if np.linalg.norm(u) > 1e-9 else np.array([1.0, 0.0])
-        grip = walk.grip_of(step)
+        yaw = transforms.yaw_of(obj_pose)
+        z = float(obj_pose[2, 3])
+        u = obj_pose[:3, :3].T @ np.array([p.x - obj_pose[0, 3], p.y - obj_pose[1, 3], 0.0])
+        if np.linalg.norm(u) < 1e-9:
+            u = np.array([1.0, 0.0, 0.0])
+        faces = candidate_faces(info, u / np.linalg.norm(u))
+        end = pose_matrix(p.x, p.y, z, yaw)
         if walk.planar:
-            phi = walk.angle(u)
-            walk.grip[step.index] = phi
-            walk.choices[step.index] = GripChoice(z=float(obj_pose[2, 3]),
-                                                  yaw=transforms.yaw_of(obj_pose))
+            face = faces[0]
+            walk.choices[step.index] = GripChoice(z=z, yaw=yaw, face=face)
             grip = walk.grip_of(step)
-            q0 = walk.planar_q(obj_pose[:3, 3], grip, phi)
-            q1 = walk.planar_q(np.array([x, y, obj_pose[2, 3]]), grip, phi)
-            yaw = transforms.yaw_of(obj_pose)
+            q0 = walk.planar_q(obj_pose[:3, 3], grip, 0.0)
+            q1 = walk.planar_q(end[:3, 3], grip, 0.0)
         else:
-            alpha = walk.angle(-u)
-            psi = transforms.yaw_of(obj_pose) - alpha
-            walk.grip[step.index] = psi
-            G = transforms.pose_inverse(grip.matrix(psi))
-            q0, _ = walk.best_of([(obj_pose @ G, None)])
+            # Faces the push can go into first (the motion within their cone).
+            cone = math.cos(math.atan(PUSH_FRICTION))
+            aligned = [a for a in faces if math.cos(a) * u[0] + math.sin(a) * u[1]
+                       >= cone * np.linalg.norm(u)] or faces[:1]
+            # The hand down (its fingers' side on the face) first; level (its
+            # fingertips on the face) where the object is tall enough for it.
+            levels = (False, True) if level_lift(info) is not None else (False,)
+            choices = [GripChoice(face=a, level=level) for level in levels for a in aligned]
+            targets = [(obj_pose @ transforms.pose_inverse(
+                face_grip(problem, step, c).matrix(0.0)), c) for c in choices]
+            q0, choice = walk.best_of(targets, ignore={step.obj})
+            # Touch, measured: the fingers' extent behind the tool origin is the arm's.
+            nominal = face_grip(problem, step, choice)
+            gap = clearance(problem, step.obj, obj_pose, q0) - CONTACT_GAP
+            reach = nominal.reach - float(np.clip(gap, -MEASURE_LIMIT, MEASURE_LIMIT))
+            walk.choices[step.index] = dataclasses.replace(choice, reach=reach)
             walk.q_prev = q0
-            yaw = alpha + psi
-            q1, _ = walk.best_of([(pose_matrix(x, y, obj_pose[2, 3], yaw) @ G, None)])
+            q0, _ = walk.best_of([(obj_pose @ transforms.pose_inverse(
+                walk.grip_of(step).matrix(0.0)), None)])
+            G = transforms.pose_inverse(walk.grip_of(step).matrix(0.0))
+            walk.q_prev = q0
+            q1, _ = walk.best_of([(end @ G, None)])
+        walk.grip[step.index] = 0.0
         walk.q[k0], walk.q[k1] = q0, q1
-        walk.poses[step.obj] = pose_matrix(x, y, obj_pose[2, 3], yaw)
+        walk.poses[step.obj] = end
         walk.q_prev = q1
 
     def reseed(self, walk, step, k):
@@ -96,19 +156,33 @@ class Push(ModeKind):
 
     def keyframe_rows(self, walk, step):
         k0, k1 = step.keyframes
-        frame, grip, t, t_block, H0 = walk.gripped(k0, step.index)
         info = walk.problem.bodies[step.obj]
+        frame, grip, t, t_block, H0 = walk.gripped(k0, step.index)
         C.same_pose(walk.rows.eq, walk.rows.ineq, step.name, H0, walk.state[step.obj],
                     walk.planar, yaw=not info.disk and not walk.planar)
+        face = face_of(info, walk.choices[step.index].face)
+        offset_rows(walk.rows.ineq, step.name, t, grip_block(step.index), face)
         walk.collide(k0, step, None, frame, {step.obj})
         frame, grip, t, t_block, H1 = walk.gripped(k1, step.index)
         if not walk.planar:
             C.upright(walk.rows.eq, step.name, H1, step.obj)
             C.rest_height(walk.rows.eq, step.name, H1, step.rest_z, step.support)
+            same_yaw(walk.rows.eq, step.name, H0, H1)
+        cone_rows(walk.rows.ineq, step.name, H0, H1, face.angle)
         walk.state.pop(step.obj)
         walk.placement_rows(step, H1)
         walk.collide(k1, step, held_of(step.obj, grip, t, t_block), frame, {step.support})
         walk.state[step.obj] = H1
+
+    def path_rows(self, rows, label, problem, qs, held, kin) -> None:
+        """Rows (stages.Rows) of the path NLP for the pushing motion through
+        configurations qs (T + 1 of them, the fixed keyframes at both ends): the push
+        rule at every step (push_contact.path_rows). `held`: collide.Held, the object
+        on its FaceGrip; `kin`: grips.Kinematics. For path.py's phase_rows_fn."""
+        T = len(qs) - 1
+        poses = [held_pose(kin.frame(q), held.grip, held.t) for q in qs]
+        blocks = [waypoint_block(i) if 0 < i < T else None for i in range(T + 1)]
+        path_rows(rows.ineq, rows.eq, label, poses, blocks, held.grip, problem.planar)
 
     def switch(self, walk, step):
         walk.release(step.obj)
@@ -117,20 +191,4 @@ class Push(ModeKind):
         walk.release(step.obj)
 
     def check(self, walk, step):
-        return self._starts_against(walk, step) + walk.rest(step)
-
-    @staticmethod
-    def _starts_against(walk, step) -> list[str]:
-        """The pusher starts against the object: within its half extent plus the pusher."""
-        problem = walk.problem
-        info = problem.bodies[step.obj]
-        tool, obj = walk.tool_start(), walk.before(step.obj)
-        d = tool[:3, 3] - obj[:3, 3]
-        reach = max(info.half[0], info.half[1]) + TOUCH_TOLERANCE
-        reach += problem.scene.robot.radius if problem.planar else PUSH_STANDOFF
-        gap = math.hypot(d[0], d[1]) - reach
-        if gap > 0:
-            return [f"{step.name}: the push starts {100 * gap:.1f} cm away from {step.obj}"]
-        if not problem.planar and abs(d[2]) > info.half[2]:
-            return [f"{step.name}: the push starts above or below {step.obj}"]
-        return []
+        return check_push(walk, step, TOUCH_TOLERANCE) + walk.rest(step)

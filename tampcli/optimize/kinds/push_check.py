@@ -1,0 +1,86 @@
+"""What `verify` re-measures of a push (kinds/push.py's `check`): a push, not a drag.
+
+From the trajectory alone: the face touched is the one the tool is beyond at
+the start of the pushing motion (push_contact.contacted_face); the pusher
+touches it (within the touch tolerance) without going into the object, also
+on the last segment of its approach (which the collision check leaves to the
+mode); every step of the object moves into that face within the friction
+cone; the object keeps its yaw (within TURN), its height and stays upright.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tampcli.geometry import transforms
+from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, contacted_face
+
+PENETRATION = 1e-3  # m: deeper than this into the object is more than touching
+SLACK = 1e-3  # of a step's length: rounding in the cone test
+STILL = 1e-6  # m: shorter steps have no direction
+# rad: the object turns with the hand at most this much between the keyframes (which
+# hold its yaw exactly): the arm's two fingers touch the face along a line and can
+# carry the moment of such a turn; the planar disk cannot turn at all.
+TURN = math.radians(2.0)
+LIFT = 1e-3  # m and 1 - cos(tilt): the pushed object keeps its height and stays upright
+APPROACH_SAMPLES = 10  # points on the approach's last segment
+
+
+def check_push(walk, step, touch: float) -> list[str]:
+    """Violations of the push rule in words (walk: verify.StepCheck)."""
+    problem, obj, name = walk.problem, step.obj, step.name
+    info = problem.bodies[obj]
+    start, end = walk.phase.start, walk.phase.end
+    before = walk.before(obj)
+    tools = problem.world.tool_poses(walk.traj[start:end + 1])
+    grasp = transforms.pose_inverse(tools[0]) @ before
+    objs = tools @ grasp
+    rel = (transforms.pose_inverse(before) @ tools[0])[:3, 3]
+    face = contacted_face(info, rel)
+    out = []
+    gap = clearance(problem, obj, before, walk.traj[start:start + 1])
+    if gap > touch:
+        out.append(f"{name}: the push starts {100 * gap:.1f} cm away from {obj}")
+    if start > 0:
+        s = np.linspace(0.0, 1.0, APPROACH_SAMPLES + 1)[:, None]
+        qs = (1 - s) * walk.traj[start - 1] + s * walk.traj[start]
+        gap = min(gap, clearance(problem, obj, before, qs))
+    if gap < -PENETRATION:
+        out.append(f"{name}: the pusher is {1000 * -gap:.1f} mm inside {obj}")
+    n = before[:3, :3] @ face.normal
+    e = before[:3, :3] @ face.tangent
+    for i in range(len(objs) - 1):
+        d = objs[i + 1][:3, 3] - objs[i][:3, 3]
+        d[2] = 0.0
+        length = float(np.linalg.norm(d))
+        if length > STILL and abs(d @ e) > PUSH_FRICTION * (d @ n) + SLACK * length:
+            off = math.degrees(math.atan2(abs(d @ e), d @ n))
+            out.append(f"{name}: a step of {100 * length:.1f} cm at waypoint {start + i} is "
+                       f"{off:.0f} deg off the normal of {obj}'s pushed face (a drag: the "
+                       f"friction cone is {math.degrees(math.atan(PUSH_FRICTION)):.1f} deg)")
+            break
+    for i, pose in enumerate(objs):
+        turn = math.atan2(before[0, 0] * pose[1, 0] - before[1, 0] * pose[0, 0],
+                          before[0, 0] * pose[0, 0] + before[1, 0] * pose[1, 0])
+        if abs(turn) > TURN:
+            out.append(f"{name}: {obj} turns {math.degrees(turn):.1f} deg by waypoint "
+                       f"{start + i}")
+            break
+        if abs(pose[2, 3] - before[2, 3]) > LIFT or pose[2, 2] < 1 - LIFT:
+            out.append(f"{name}: {obj} lifts or tips at waypoint {start + i}")
+            break
+    return out
+
+
+def clearance(problem, obj: str, pose, qs) -> float:
+    """Smallest signed distance between the robot and `obj` (at `pose`) over the rows
+    of qs (at most 5 cm: farther counts as 5 cm)."""
+    horizon = 0.05
+    others = frozenset(n for n in problem.bodies if n != obj)
+    found = problem.checker.distances_many(np.atleast_2d(qs), {obj: pose}, None,
+                                           [others] * len(np.atleast_2d(qs)), horizon)
+    target = f"body:{obj}"
+    return min((c.distance for contacts in found for c in contacts
+                if target in (c.a, c.b)), default=horizon)
