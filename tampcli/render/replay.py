@@ -85,7 +85,7 @@ class Replay:
             raise ValueError("a replay needs a trajectory")
         self.solution = solution
         self.q = np.asarray(solution.trajectory, dtype=float)
-        self._fingers = None if fingers is None else np.asarray(fingers, dtype=float)
+        self._finger_values = None if fingers is None else np.asarray(fingers, dtype=float)
         self.phases = solution.phases
         mode_kind = mode_kind or (lambda action: None)
         # Per phase: its action's kind (optimize.kinds); None for a motion or
@@ -205,10 +205,10 @@ class Replay:
         return self._with_fingers(state, item.index, 0.0)
 
     def _with_fingers(self, state: FrameState, index: int, alpha: float) -> FrameState:
-        if self._fingers is None:
+        if self._finger_values is None:
             return state
-        f = self._fingers[index] if alpha == 0.0 else \
-            (1.0 - alpha) * self._fingers[index] + alpha * self._fingers[index + 1]
+        f = self._finger_values[index] if alpha == 0.0 else \
+            (1.0 - alpha) * self._finger_values[index] + alpha * self._finger_values[index + 1]
         return dataclasses.replace(state, fingers=tuple(float(v) for v in f))
 
     def keyframes(self) -> list[FrameState]:

@@ -60,7 +60,8 @@ def face_grip(problem, step, choice):
         lift = level_lift(info)
         if lift is None:
             raise ValueError(f"{step.name}: {step.obj} is too low for a level hand")
-        return level_face_grip(face, lift, choice.reach)
+        return level_face_grip(face, lift, choice.reach,
+                               problem.world.fingertip_depth or 0.0)
     return arm_face_grip(face, choice.reach)
 
 

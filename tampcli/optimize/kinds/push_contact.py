@@ -25,7 +25,6 @@ import numpy as np
 
 from tampcli.optimize.expr import Label, PoseX, RowSet, add_jac
 from tampcli.optimize.grips import Grip
-from tampcli.optimize.kinds.grasp import PANDA_FINGERTIP
 
 PUSH_FRICTION = 0.5  # pusher on object; half-angle of the cone atan(0.5) = 26.6 deg
 OFFSET_FRACTION = 0.5  # the contact point stays in the middle half of the face
@@ -133,13 +132,15 @@ def level_lift(info) -> float | None:
     return max(need, 0.0) if need <= most else None
 
 
-def level_face_grip(face: Face, lift: float, reach: float | None = None) -> FaceGrip:
+def level_face_grip(face: Face, lift: float, reach: float | None = None,
+                    fingertip: float = 0.0) -> FaceGrip:
     """The arm's hand level, its tool z axis into the face and the fingers spread along
-    it: the fingertips push (under a low ceiling). The tool's x axis points down."""
+    it: the fingertips push (under a low ceiling). The tool's x axis points down.
+    `fingertip`: how far the fingertips reach beyond the tool origin (the World's)."""
     tool_in_obj = np.column_stack([[0.0, 0.0, -1.0], face.tangent, face.normal])
     G = tool_in_obj.T
     if reach is None:
-        reach = face.depth + PANDA_FINGERTIP + CONTACT_GAP
+        reach = face.depth + fingertip + CONTACT_GAP
     return FaceGrip(tuple(G @ np.array([0.0, 0.0, -lift])), tuple(map(tuple, G)),
                     tuple(G @ face.normal), tuple(G @ face.tangent), reach)
 
