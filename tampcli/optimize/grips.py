@@ -76,8 +76,9 @@ class Grip(ABC):
     """Object frame in the tool frame as a function of an optional parameter t.
 
     One subclass per way of holding: TopGrip (arm, fixed yaw offset),
-    PitchGrip (arm from the side, t = pitch), YawGrip (arm pushing, t = yaw
-    offset), SideGrip (planar suction, t = contact angle).
+    PitchGrip (arm from the side, t = pitch), SideGrip (planar suction, t =
+    contact angle); a push's FaceGrip (kinds/push_contact.py, t = the contact's
+    offset along the face).
     """
 
     c0: tuple[float, float, float]  # centre when it does not depend on t
@@ -112,17 +113,6 @@ class TopGrip(Grip):
     def parts(self, t: float):
         G, _ = _down(self.psi)
         return np.array(self.c0), G, np.zeros(3), np.zeros((3, 3))
-
-
-@dataclass(frozen=True)
-class YawGrip(Grip):
-    """The arm against the object's side (a push): the yaw offset is the parameter t."""
-
-    has_param = True
-
-    def parts(self, t: float):
-        G, dG = _down(t)
-        return np.array(self.c0), G, np.zeros(3), dG
 
 
 @dataclass(frozen=True)

@@ -8,8 +8,9 @@ no witness pair switches within the step.
 import numpy as np
 import pytest
 
-from tampcli.optimize.grips import Kinematics, SideGrip, TopGrip, YawGrip, held_pose
+from tampcli.optimize.grips import Kinematics, SideGrip, TopGrip, held_pose
 from tampcli.optimize.init import final_guess, keyframe_guess
+from tampcli.optimize.kinds.push_contact import FaceGrip
 from tampcli.optimize.path import phase_layout, phase_rows_fn
 from tampcli.optimize.problem import lower
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
@@ -57,7 +58,9 @@ def test_held_pose_jacobians(wall, kind):
     kin = Kinematics(world)
     rng = np.random.default_rng(1)
     grip = {"top": TopGrip((0.0, 0.0, 0.01), psi=0.7),
-            "push": YawGrip((-0.04, 0.0, 0.0)),
+            "push": FaceGrip((0.0, 0.0, 0.01), ((0.0, 1.0, 0.0), (-1.0, 0.0, 0.0),
+                                                  (0.0, 0.0, 1.0)), (0.0, -1.0, 0.0),
+                             (1.0, 0.0, 0.0), 0.045),
             "side": SideGrip((0.0, 0.0, 0.02), rho=0.08, yaw=0.3)}[kind]
     q = rng.uniform(world.lower, world.upper)
     t = 0.4
