@@ -12,7 +12,7 @@ import time
 from pathlib import Path
 
 from tampcli.errors import ExitCode, InputError, UsageError
-from tampcli.pddl import parser
+from tampcli.pddl.load import load
 from tampcli.search.heuristics import HEURISTICS
 from tampcli.search.searches import SEARCHES, SearchLimits
 from tampcli.task.ground import ground
@@ -57,12 +57,13 @@ def run(args, ui) -> int:
     seconds: dict[str, float] = {}
 
     start = time.perf_counter()
-    domain = parser.parse_domain_file(args.domain)
-    problem = parser.parse_problem_file(args.problem)
+    loaded = load(args.domain, args.problem)
     seconds["parse"] = time.perf_counter() - start
+    for warning in loaded.warnings:
+        ui.warn(warning)
 
     start = time.perf_counter()
-    task = ground(domain, problem)
+    task = ground(loaded.domain, loaded.problem)
     seconds["ground"] = time.perf_counter() - start
     stats: dict = {"facts": len(task.facts), "operators": len(task.operators),
                    "axioms": len(task.axioms)}
