@@ -27,7 +27,8 @@ def fork(goal="(and (g1) (g2))"):
 def test_known_values_on_the_fork():
     task = fork()
     values = {name: HEURISTICS[name](task)(task.init) for name in HEURISTICS}
-    assert values == {"hmax": 2.0, "hadd": 4.0, "hff": 3.0, "lmcut": 3.0, "blind": 1.0}
+    assert values == {"hmax": 2.0, "hadd": 4.0, "hff": 3.0, "lmcut": 3.0, "blind": 1.0,
+                      "lmcount": 3.0}
 
 
 def test_goal_states_are_zero_and_dead_ends_infinite():

@@ -36,14 +36,16 @@ class HFF:
     """Cost of a relaxed plan read off the h_add best supporters.
 
     An operator counts once however many of its relaxed copies (conditional
-    effects) the relaxed plan uses.
+    effects) the relaxed plan uses. With `unit_cost` every operator costs 1
+    (LAMA's first search: the number of steps left, whatever the costs).
     """
 
     admissible = False
 
-    def __init__(self, task: Task):
-        self.relaxed = RelaxedTask(task)
-        self.op_cost = [op.cost for op in task.operators]
+    def __init__(self, task: Task, unit_cost: bool = False):
+        self.relaxed = r = RelaxedTask(task)
+        self.op_cost = [1.0 if unit_cost else op.cost for op in task.operators]
+        self.costs = [1.0 if op >= 0 else 0.0 for op in r.op] if unit_cost else None
 
     def __call__(self, state) -> float:
         return self.relaxed_plan(state)[0]
@@ -51,7 +53,7 @@ class HFF:
     def relaxed_plan(self, state) -> tuple[float, set[int]]:
         """(cost, operator indices) of the relaxed plan; (inf, empty) at a dead end."""
         relaxed = self.relaxed
-        dist, supporter = relaxed.explore(state, additive=True)
+        dist, supporter = relaxed.explore(state, additive=True, costs=self.costs)
         if dist[relaxed.goal] == INF:
             return INF, set()
         pre, op_of = relaxed.pre, relaxed.op
