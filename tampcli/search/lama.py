@@ -46,7 +46,7 @@ def lama(task: Task, heuristic: Heuristic, limits: SearchLimits = NO_LIMITS) -> 
     best = [INF, INF]
     parents: dict = {}
     pop, push = heapq.heappop, heapq.heappush
-    successors, is_goal, operators = task.successors, task.is_goal, task.operators
+    successors, closure, goal, operators = task.successors, task.closure, task.goal, task.operators
     while True:
         chosen = min((i for i in range(4) if lists[i]), key=picks.__getitem__, default=None)
         if chosen is None:
@@ -58,7 +58,8 @@ def lama(task: Task, heuristic: Heuristic, limits: SearchLimits = NO_LIMITS) -> 
         parents[state] = None if parent is None else (parent, op)
         if progress is not None and parent is not None:
             progress(parent, state)
-        if is_goal(state):
+        closed = closure(state)
+        if goal.holds(closed):
             return budget.result("solved", path_to(parents, state))
         h1, used = hff.relaxed_plan(state)
         budget.evaluated += 1
@@ -75,7 +76,7 @@ def lama(task: Task, heuristic: Heuristic, limits: SearchLimits = NO_LIMITS) -> 
             return budget.limit()
         budget.expanded += 1
         preferred = {id(operators[i]) for i in used}
-        for succ_op, succ in successors(state):
+        for succ_op, succ in successors(state, closed):
             budget.generated += 1
             if succ in parents:
                 continue

@@ -35,9 +35,28 @@ def test_landmarks_are_the_goals_and_the_shared_preconditions_before_them():
     task = make_task(KEYS, KEYS_PROBLEM)
     lm = LandmarkCount(task)
     # at-start is static, so not a fact of the grounded task
-    assert _names(task, lm.facts) == ["(has k1)", "(has k2)", "(open d1)", "(open d2)"]
+    assert sorted(_names(task, node) for node in lm.landmarks) == [
+        ["(has k1)"], ["(has k2)"], ["(open d1)"], ["(open d2)"]]
     assert lm.orderings == 2
     assert lm(task.init) == 4.0
+
+
+def test_either_key_is_a_disjunctive_landmark():
+    # either key opens either door: neither key is a landmark, one of the two is
+    task = make_task(KEYS, KEYS_PROBLEM.replace("(opens k2 d2)",
+                                                "(opens k2 d2) (opens k2 d1) (opens k1 d2)"))
+    lm = LandmarkCount(task)
+    nodes = sorted(_names(task, node) for node in lm.landmarks)
+    assert nodes == [["(has k1)", "(has k2)"], ["(open d1)"], ["(open d2)"]]
+    assert lm(task.init) == 3.0
+    s1 = task.apply(task.init, by_name(task, "(fetch k2)"))
+    lm.progress(task.init, s1)
+    assert lm(s1) == 2.0
+    # with k1 needed only for d2 (k2 does not open it), k1 is a landmark alone and
+    # the disjunction that holds it is dropped
+    task = make_task(KEYS, KEYS_PROBLEM.replace("(opens k2 d2)", "(opens k2 d1) (opens k1 d2)"))
+    nodes = sorted(_names(task, node) for node in LandmarkCount(task).landmarks)
+    assert nodes == [["(has k1)"], ["(open d1)"], ["(open d2)"]]
 
 
 def test_landmark_count_follows_the_path():

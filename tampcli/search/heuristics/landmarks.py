@@ -1,12 +1,17 @@
 """The landmark-count heuristic of LAMA (Richter & Westphal 2010), on fact landmarks
 found by back-chaining through the relaxed planning graph.
 
-Landmarks (facts every plan makes true at some point): the goal facts; then,
+Landmarks (facts, or sets of facts, every plan makes true at some point): the goal facts; then,
 for each landmark L not true initially, the preconditions shared by all of
 L's *first achievers* (the achievers applicable in the relaxed exploration
 from the initial state that never makes L true) are landmarks, ordered
-greedy-necessarily before L. This is the shared-precondition part of RHW
-landmarks, without disjunctive or domain-transition-graph landmarks.
+greedy-necessarily before L; so is, for each predicate that every first
+achiever needs a fact of, the disjunction of those facts (when it has 2 to 4
+facts, none true initially, and no fact that is a landmark alone): one of
+them is made true by every plan. Disjunctive landmarks are back-chained like
+the others. This is RHW's back-chaining (Richter, Helmert & Westphal 2008)
+without its domain-transition-graph landmarks, with predicates in place of
+SAS+ variables.
 Auxiliary relaxed facts (`or` nodes, derived facts, the goal fact) are
 chained through but are not landmarks themselves: a state does not hold them.
 
@@ -37,23 +42,30 @@ class LandmarkCount:
         for a, adds in enumerate(r.add):
             for q in adds:
                 achievers[q].append(a)
-        landmarks, before, unreachable = _backchain(r, achievers, real, task.init)
-        self.facts = tuple(landmarks)
-        self.bit = {f: 1 << i for i, f in enumerate(self.facts)}
-        self.all = (1 << len(self.facts)) - 1
+        predicate = [name[1:].split(" ", 1)[0].rstrip(")") for name in task.facts]
+        found = _Backchain(r, achievers, real, predicate, task.init)
+        landmarks = found.landmarks
+        self.landmarks: tuple[frozenset[int], ...] = tuple(landmarks)
+        n = len(self.landmarks)
+        # a fact may belong to several landmarks (disjunctive ones)
+        self.bit: dict[int, int] = {}
+        for i, node in enumerate(self.landmarks):
+            for f in node:
+                self.bit[f] = self.bit.get(f, 0) | 1 << i
+        self.all = (1 << n) - 1
         goal_facts = task.goal.pos
-        self.goal_mask = sum(self.bit[f] for f in self.facts if f in goal_facts)
+        self.goal_mask = sum(1 << i for i, node in enumerate(self.landmarks)
+                             if len(node) == 1 and node <= goal_facts)
         # per landmark: the mask of the landmarks it is greedy-necessary for
-        self.children = [0] * len(self.facts)
-        for parent, child in before:
-            self.children[landmarks[parent]] |= self.bit[child]
-        self.orderings = len(before)
-        # per landmark: the landmarks ordered (transitively) before it
-        self.ancestors = [0] * len(self.facts)
+        self.children = [0] * n
         parents: dict[int, list[int]] = {}
-        for parent, child in before:
+        for parent, child in found.orderings:
+            self.children[landmarks[parent]] |= 1 << landmarks[child]
             parents.setdefault(landmarks[child], []).append(landmarks[parent])
-        for i in range(len(self.facts)):
+        self.orderings = len(found.orderings)
+        # per landmark: the landmarks ordered (transitively) before it
+        self.ancestors = [0] * n
+        for i in range(n):
             mask, todo = 0, list(parents.get(i, ()))
             while todo:
                 j = todo.pop()
@@ -63,8 +75,8 @@ class LandmarkCount:
             self.ancestors[i] = mask
         # a landmark no relaxed plan from the initial state reaches: a state
         # that still needs it is a dead end (all are when the goal is one)
-        self.dead = sum(self.bit[f] for f in unreachable if f in self.bit)
-        self.unsolvable = r.goal in unreachable
+        self.dead = sum(1 << landmarks[node] for node in found.unreachable if node in landmarks)
+        self.unsolvable = frozenset({r.goal}) in found.unreachable
         self.reached: dict = {task.init: self.true_in(task.init)}
 
     def true_in(self, state) -> int:
@@ -110,44 +122,78 @@ class LandmarkCount:
         return float(h)
 
 
-def _backchain(r: RelaxedTask, achievers, real, init) -> tuple[dict[int, int], list, set]:
-    """Landmark facts (fact -> index), orderings (parent fact, child fact), and the
-    landmarks (auxiliary ones too) unreachable from `init` in the relaxation."""
-    unreachable: set[int] = set()
-    landmarks: dict[int, int] = {}
-    targets: dict[int, frozenset[int]] = {r.goal: frozenset()}
-    orderings: set[tuple[int, int]] = set()
-    queue = [r.goal]
-    seen = {r.goal}
-    while queue:
-        fact = queue.pop()
-        if fact in init:
-            continue
-        reached = _reachable_without(r, fact, init)
-        first = [a for a in achievers[fact] if all(reached[p] for p in r.pre[a])]
-        if not first:
-            unreachable.add(fact)
-            continue
-        shared = set(r.pre[first[0]])
-        for a in first[1:]:
-            shared.intersection_update(r.pre[a])
-        # orderings go to the nearest real landmarks after `fact`
-        after = frozenset({fact}) if real[fact] else targets[fact]
-        for p in shared:
-            if real[p]:
-                orderings.update((p, child) for child in after)
-                if p not in landmarks:
-                    landmarks[p] = len(landmarks)
-            else:
-                targets[p] = targets.get(p, frozenset()) | after
-            if p not in seen:
-                seen.add(p)
-                queue.append(p)
-    return landmarks, sorted(orderings), unreachable
+class _Backchain:
+    """Landmarks (node -> index; a node is a frozenset of facts, one of which
+    every plan makes true), greedy-necessary orderings (parent node, child
+    node), and the nodes (auxiliary ones too) unreachable in the relaxation."""
+
+    def __init__(self, r: RelaxedTask, achievers, real, predicate, init):
+        self.landmarks: dict[frozenset[int], int] = {}
+        self.orderings: set[tuple[frozenset[int], frozenset[int]]] = set()
+        self.unreachable: set[frozenset[int]] = set()
+        goal = frozenset({r.goal})
+        targets: dict[frozenset[int], frozenset] = {goal: frozenset()}
+        queue, seen = [goal], {goal}
+        while queue:
+            node = queue.pop(0)
+            if not node.isdisjoint(init):
+                continue
+            reached = _reachable_without(r, node, init)
+            first = [a for a in {a for f in node for a in achievers[f]}
+                     if all(reached[p] for p in r.pre[a])]
+            if not first:
+                self.unreachable.add(node)
+                continue
+            shared = set(r.pre[first[0]]).intersection(*(r.pre[a] for a in first[1:]))
+            found = [frozenset({p}) for p in sorted(shared)]
+            found += _disjunctive(r, first, shared, real, predicate, init)
+            # orderings go to the nearest real landmarks after `node`
+            after = frozenset({node}) if _is_real(node, real) else targets[node]
+            for new in found:
+                if len(new) > 1 and any(frozenset({f}) in self.landmarks for f in new):
+                    continue
+                if _is_real(new, real):
+                    self.orderings.update((new, child) for child in after)
+                    self.landmarks.setdefault(new, len(self.landmarks))
+                else:
+                    targets[new] = targets.get(new, frozenset()) | after
+                if new not in seen:
+                    seen.add(new)
+                    queue.append(new)
+        # a disjunction holding a fact that is a landmark alone says nothing more
+        singles = {f for node in self.landmarks if len(node) == 1 for f in node}
+        kept = [node for node in self.landmarks if len(node) == 1 or node.isdisjoint(singles)]
+        self.landmarks = {node: i for i, node in enumerate(kept)}
+        self.orderings = {(a, b) for a, b in self.orderings
+                          if a in self.landmarks and b in self.landmarks}
 
 
-def _reachable_without(r: RelaxedTask, banned: int, init) -> bytearray:
-    """Facts relaxed-reachable from `init` by actions that do not add `banned`."""
+def _is_real(node: frozenset[int], real) -> bool:
+    return all(real[f] for f in node)
+
+
+def _disjunctive(r: RelaxedTask, first, shared, real, predicate, init) -> list[frozenset[int]]:
+    """Per predicate that every first achiever needs (outside `shared`), the
+    facts of it they need: one of them is a landmark. Kept small (2 to 4
+    facts, none true initially), as RHW does."""
+    by_predicate: dict[str, set[int]] | None = None
+    for a in first:
+        mine: dict[str, set[int]] = {}
+        for p in r.pre[a]:
+            if p not in shared and real[p]:
+                mine.setdefault(predicate[p], set()).add(p)
+        if by_predicate is None:
+            by_predicate = mine
+        else:
+            by_predicate = {k: v | mine[k] for k, v in by_predicate.items() if k in mine}
+        if not by_predicate:
+            return []
+    return [frozenset(facts) for _, facts in sorted(by_predicate.items())
+            if 2 <= len(facts) <= 4 and facts.isdisjoint(init)]
+
+
+def _reachable_without(r: RelaxedTask, banned: frozenset[int], init) -> bytearray:
+    """Facts relaxed-reachable from `init` by actions that add no fact of `banned`."""
     reached = bytearray(r.n_facts)
     unsat = r.pre_count[:]
     stack = []
@@ -155,7 +201,7 @@ def _reachable_without(r: RelaxedTask, banned: int, init) -> bytearray:
         reached[f] = 1
         stack.append(f)
     for a in r.no_pre:
-        if banned not in r.add[a]:
+        if banned.isdisjoint(r.add[a]):
             for q in r.add[a]:
                 if not reached[q]:
                     reached[q] = 1
@@ -167,7 +213,7 @@ def _reachable_without(r: RelaxedTask, banned: int, init) -> bytearray:
             unsat[a] -= 1
             if unsat[a] == 0:
                 add = adds[a]
-                if banned in add:
+                if not banned.isdisjoint(add):
                     continue
                 for q in add:
                     if not reached[q]:
