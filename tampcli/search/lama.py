@@ -11,6 +11,8 @@ picks), which is most of LAMA's speed. Preferred operators are those of the
 state's h_FF relaxed plan. Evaluation is lazy: successors are queued with
 their parent's values and evaluated when picked. Both heuristics count
 steps, not costs (as lama-first does); the plan's real cost is reported.
+A second heuristic that says it is not `informative` (a landmark count
+without landmarks) is left out: h_FF alone, with its preferred list.
 """
 
 from __future__ import annotations
@@ -41,8 +43,10 @@ def lama(task: Task, heuristic: Heuristic, limits: SearchLimits = NO_LIMITS) -> 
     # hff, hff preferred, second, second preferred
     lists: list[list] = [[], [], [], []]
     picks = [0, 0, 0, 0]
+    # a heuristic without information (no landmarks found) would only turn
+    # half the picks into breadth-first search
+    alternate = getattr(heuristic, "informative", True)
     lists[0].append((0.0, next(counter), None, None, task.init))
-    lists[2].append(lists[0][0])
     best = [INF, INF]
     parents: dict = {}
     pop, push = heapq.heappop, heapq.heappush
@@ -65,7 +69,7 @@ def lama(task: Task, heuristic: Heuristic, limits: SearchLimits = NO_LIMITS) -> 
         budget.evaluated += 1
         if h1 == INF:
             continue
-        h2 = heuristic(state)
+        h2 = heuristic(state) if alternate else 0.0
         if h2 == INF:
             continue
         if h1 < best[0] or h2 < best[1]:
@@ -82,7 +86,9 @@ def lama(task: Task, heuristic: Heuristic, limits: SearchLimits = NO_LIMITS) -> 
                 continue
             c = next(counter)
             push(lists[0], (h1, c, state, succ_op, succ))
-            push(lists[2], (h2, c, state, succ_op, succ))
+            if alternate:
+                push(lists[2], (h2, c, state, succ_op, succ))
             if id(succ_op) in preferred:
                 push(lists[1], (h1, c, state, succ_op, succ))
-                push(lists[3], (h2, c, state, succ_op, succ))
+                if alternate:
+                    push(lists[3], (h2, c, state, succ_op, succ))

@@ -78,6 +78,8 @@ class LandmarkCount:
         self.dead = sum(1 << landmarks[node] for node in found.unreachable if node in landmarks)
         self.unsolvable = frozenset({r.goal}) in found.unreachable
         self.reached: dict = {task.init: self.true_in(task.init)}
+        # without landmarks the count is 0 everywhere (dead ends aside)
+        self.informative = bool(self.landmarks) or self.unsolvable
 
     def true_in(self, state) -> int:
         bit = self.bit
