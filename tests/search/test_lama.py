@@ -178,3 +178,16 @@ def test_anytime_stops_at_the_time_limit():
     assert steps[-1] == Outcome("limit")
     costs = [s.cost for s in steps[:-1]]
     assert costs == sorted(costs, reverse=True)
+
+
+@pytest.mark.parametrize("folder, name", [("blocks", "probBLOCKS-4-0.pddl"),
+                                          ("transport-opt08-strips", "p02.pddl"),
+                                          ("psr-large", "p02-s46-n3-l5-f50.pddl")])
+def test_elimination_shortens_ipc_plans_with_detours(folder, name):
+    problem = ipc.IPC / folder / name
+    loaded = load(ipc.domain_of(problem), problem)
+    task = ground(loaded.domain, loaded.problem)
+    plan = lazy_gbfs(task, HEURISTICS["hadd"](task)).plan
+    shorter = eliminate_redundant(task, plan)
+    assert len(shorter) < len(plan)
+    assert validate_plan(loaded.domain, loaded.problem, [op.name for op in shorter]).valid
