@@ -93,3 +93,17 @@ def test_heuristics_see_through_axioms():
     values = {name: HEURISTICS[name](task)(task.init) for name in ("hmax", "hadd", "hff", "lmcut")}
     assert all(0 < v < math.inf for v in values.values())
     assert values["hmax"] <= values["lmcut"] <= 8  # optimal cost 8 (REFERENCE.csv)
+
+
+def test_unit_cost_hff_with_buckets_matches_the_heap():
+    # the bucket queue of whole-number costs must give h_add's own values
+    task = ipc_task("elevators-opt08-strips", "p03.pddl")
+    unit = HFF(task, unit_cost=True)
+    goal = unit.relaxed.goal
+    state = task.init
+    for op in astar(task, HFF(task)).plan:
+        heap, _ = unit.relaxed.explore(state, additive=True, costs=unit.costs)
+        buckets, _ = unit.relaxed.explore(state, additive=True, costs=unit.costs, integral=True)
+        assert heap[goal] == buckets[goal] > 0
+        state = task.apply(state, op)
+    assert unit(task.init) == len(unit.relaxed_plan(task.init)[1]) > 0

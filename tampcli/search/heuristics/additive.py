@@ -45,7 +45,8 @@ class HFF:
     def __init__(self, task: Task, unit_cost: bool = False):
         self.relaxed = r = RelaxedTask(task)
         self.op_cost = [1.0 if unit_cost else op.cost for op in task.operators]
-        self.costs = [1.0 if op >= 0 else 0.0 for op in r.op] if unit_cost else None
+        self.costs = [1 if op >= 0 else 0 for op in r.op] if unit_cost else None
+        self.integral = unit_cost
 
     def __call__(self, state) -> float:
         return self.relaxed_plan(state)[0]
@@ -53,7 +54,8 @@ class HFF:
     def relaxed_plan(self, state) -> tuple[float, set[int]]:
         """(cost, operator indices) of the relaxed plan; (inf, empty) at a dead end."""
         relaxed = self.relaxed
-        dist, supporter = relaxed.explore(state, additive=True, costs=self.costs)
+        dist, supporter = relaxed.explore(state, additive=True, costs=self.costs,
+                                            integral=self.integral)
         if dist[relaxed.goal] == INF:
             return INF, set()
         pre, op_of = relaxed.pre, relaxed.op

@@ -89,14 +89,17 @@ class RelaxedTask:
 
     # ------------------------------------------------------------ explorations
 
-    def explore(self, state, additive: bool, costs=None):
+    def explore(self, state, additive: bool, costs=None, integral: bool = False):
         """h_add (additive) or h_max costs of every fact from `state`.
 
         Returns (dist, supporter): supporter[f] is the action that reached f
         cheapest, -1 for the state's facts and None for unreached ones;
-        stops once the goal fact is settled.
+        stops once the goal fact is settled. `integral`: every cost is a
+        whole number, so h_add can use a bucket queue in place of the heap.
         """
         costs = self.cost if costs is None else costs
+        if additive and integral:
+            return self._explore_buckets(state, costs)
         pre_of, adds, goal = self.pre_of, self.add, self.goal
         unsat = self.pre_count[:]
         acc = [0.0] * self.n_actions
@@ -146,4 +149,53 @@ class RelaxedTask:
                                     level.append(q)
                                 else:
                                     push(heap, (nc, q))
+        return dist, supporter
+
+    def _explore_buckets(self, state, costs):
+        """h_add with whole-number costs: buckets of facts by cost, in place of the heap."""
+        pre_of, adds, goal = self.pre_of, self.add, self.goal
+        unsat = self.pre_count[:]
+        acc = [0] * self.n_actions
+        dist = [INF] * self.n_facts
+        supporter: list = [None] * self.n_facts
+        for f in state:
+            dist[f] = 0
+            supporter[f] = -1
+        buckets: list[list[int]] = [list(state)]
+        if self.init_fact is not None:
+            dist[self.init_fact] = 0
+            supporter[self.init_fact] = -1
+            buckets[0].append(self.init_fact)
+        for a in self.no_pre:
+            c = int(costs[a])
+            for q in adds[a]:
+                if c < dist[q]:
+                    dist[q] = c
+                    supporter[q] = a
+                    while len(buckets) <= c:
+                        buckets.append([])
+                    buckets[c].append(q)
+        c = 0
+        while c < len(buckets):
+            bucket = buckets[c]
+            while bucket:
+                f = bucket.pop()
+                if dist[f] != c:
+                    continue
+                if f == goal:
+                    return dist, supporter
+                for a in pre_of[f]:
+                    left = unsat[a] - 1
+                    unsat[a] = left
+                    acc[a] += c
+                    if left == 0:
+                        nc = acc[a] + costs[a]
+                        for q in adds[a]:
+                            if nc < dist[q]:
+                                dist[q] = nc
+                                supporter[q] = a
+                                while len(buckets) <= nc:
+                                    buckets.append([])
+                                buckets[nc].append(q)
+            c += 1
         return dist, supporter
