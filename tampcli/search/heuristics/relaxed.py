@@ -93,8 +93,11 @@ class RelaxedTask:
         """h_add (additive) or h_max costs of every fact from `state`.
 
         Returns (dist, supporter): supporter[f] is the action that reached f
-        cheapest, -1 for the state's facts and None for unreached ones;
-        stops once the goal fact is settled. `integral`: every cost is a
+        cheapest, -1 for the state's facts and None for unreached ones.
+        Stops as soon as the goal fact is reached: its one achiever, the goal
+        action, fires only once every goal condition is settled, so its value
+        is final then (with h_add it is far above the goal conditions' own
+        costs, and exploring up to it would settle nearly every fact). `integral`: every cost is a
         whole number, so h_add can use a bucket queue in place of the heap.
         """
         costs = self.cost if costs is None else costs
@@ -145,6 +148,8 @@ class RelaxedTask:
                             if nc < dist[q]:
                                 dist[q] = nc
                                 supporter[q] = a
+                                if q == goal:
+                                    return dist, supporter
                                 if nc == c:
                                     level.append(q)
                                 else:
@@ -194,6 +199,8 @@ class RelaxedTask:
                             if nc < dist[q]:
                                 dist[q] = nc
                                 supporter[q] = a
+                                if q == goal:
+                                    return dist, supporter
                                 while len(buckets) <= nc:
                                     buckets.append([])
                                 buckets[nc].append(q)
