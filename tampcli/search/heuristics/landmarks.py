@@ -7,7 +7,8 @@ L's *first achievers* (the achievers applicable in the relaxed exploration
 from the initial state that never makes L true) are landmarks, ordered
 greedy-necessarily before L; so is, for each predicate that every first
 achiever needs a fact of, the disjunction of those facts (when it has 2 to 4
-facts, none true initially, and no fact that is a landmark alone): one of
+facts, none true initially, none that is a landmark alone or in another
+disjunction, as in Fast Downward's RHW): one of
 them is made true by every plan. Disjunctive landmarks are back-chained like
 the others. This is RHW's back-chaining (Richter, Helmert & Westphal 2008)
 without its domain-transition-graph landmarks, with predicates in place of
@@ -136,6 +137,7 @@ class _Backchain:
         goal = frozenset({r.goal})
         targets: dict[frozenset[int], frozenset] = {goal: frozenset()}
         queue, seen = [goal], {goal}
+        in_disjunction: set[int] = set()  # facts of a disjunctive landmark: no overlaps
         while queue:
             node = queue.pop(0)
             if not node.isdisjoint(init):
@@ -152,8 +154,11 @@ class _Backchain:
             # orderings go to the nearest real landmarks after `node`
             after = frozenset({node}) if _is_real(node, real) else targets[node]
             for new in found:
-                if len(new) > 1 and any(frozenset({f}) in self.landmarks for f in new):
+                if len(new) > 1 and new not in self.landmarks and any(
+                        frozenset({f}) in self.landmarks or f in in_disjunction for f in new):
                     continue
+                if len(new) > 1:
+                    in_disjunction.update(new)
                 if _is_real(new, real):
                     self.orderings.update((new, child) for child in after)
                     self.landmarks.setdefault(new, len(self.landmarks))

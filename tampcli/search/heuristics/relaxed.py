@@ -183,6 +183,9 @@ class RelaxedTask:
         c = 0
         while c < len(buckets):
             bucket = buckets[c]
+            # lowest fact first, as the heap pops (c, f): the supporters, hence
+            # the relaxed plans and preferred operators, are the heap's own
+            bucket.sort(reverse=True)
             while bucket:
                 f = bucket.pop()
                 if dist[f] != c:
