@@ -56,11 +56,13 @@ def domain_of(problem: Path) -> Path:
 
 
 def problems(per_domain: int) -> list[tuple[str, Path, Path]]:
+    """The first problems of every domain, first ones first: a run cut short has
+    measured the first k problems of every domain rather than a few domains."""
     out = []
     for folder in sorted(p for p in IPC.iterdir() if p.is_dir()):
         found = sorted((p for p in folder.glob("*.pddl") if "domain" not in p.name), key=natural)
-        out += [(folder.name, domain_of(p), p) for p in found[:per_domain]]
-    return out
+        out += [(i, folder.name, domain_of(p), p) for i, p in enumerate(found[:per_domain])]
+    return [(name, domain, problem) for _, name, domain, problem in sorted(out)]
 
 
 def fd_driver() -> Path:
@@ -174,7 +176,11 @@ def report(rows: list[dict], anytime: list[dict], args, minutes: float, loads: l
         f"--jobs {args.jobs} --anytime-per-domain {args.anytime_per_domain} --anytime-limit "
         f"{args.anytime_limit:g}` ({time.strftime('%Y-%m-%d %H:%M')} UTC, {minutes:.0f} min). "
         f"{s['n']} problems: the first {per} (natural sort) of each of the {len(domains)} "
-        "domains in benchmarks/ipc.",
+        "domains in benchmarks/ipc"
+        + ("." if s["n"] == len(problems(args.per_domain)) else
+           f" (**partial run**: {s['n']} of the {len(problems(args.per_domain))} problems "
+           "asked for were measured before it was stopped; problems are taken first ones "
+           "first, so the last index is incomplete)."),
         "",
         f"**The machine was loaded**: {os.cpu_count()} cores shared with other jobs (other "
         "helpers were running tests at the same time); load average "
@@ -284,20 +290,19 @@ def main() -> int:
         Path(args.out).write_text(report(rows, anytime, args, minutes,
                                          [load_start, os.getloadavg()[0]]))
 
+    def any_one(item):
+        name, domain, problem = item
+        result = run_anytime(domain, problem, args.anytime_limit)
+        print(f"anytime {name} {problem.name}: {result.get('costs')}", flush=True)
+        return {"domain": name, "problem": problem.name, "result": result}
+
+    # the anytime runs are short and go first; the report is rewritten after
+    # every problem, so a run stopped early leaves an honest partial report
     with ThreadPoolExecutor(args.jobs) as pool:
+        for entry in pool.map(any_one, problems(args.anytime_per_domain)):
+            anytime.append(entry)
         for row in pool.map(one, todo):
             rows.append(row)
-            write()
-        subset = problems(args.anytime_per_domain)
-
-        def any_one(item):
-            name, domain, problem = item
-            result = run_anytime(domain, problem, args.anytime_limit)
-            print(f"anytime {name} {problem.name}: {result.get('costs')}", flush=True)
-            return {"domain": name, "problem": problem.name, "result": result}
-
-        for entry in pool.map(any_one, subset):
-            anytime.append(entry)
             write()
     write()
     return 0
