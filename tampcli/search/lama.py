@@ -8,7 +8,8 @@ second heuristic, and by it for preferred successors. Each pick takes the
 front of the list picked least often so far; whenever a state improves the
 best value of either heuristic, the preferred lists are boosted (1000 free
 picks), which is most of LAMA's speed. Preferred operators are those of the
-state's h_FF relaxed plan. Evaluation is lazy: successors are queued with
+state's h_FF relaxed plan; like FD's, this h_FF must also achieve the facts
+that conditions need false. Evaluation is lazy: successors are queued with
 their parent's values and evaluated when picked. Both heuristics count
 steps, not costs (as lama-first does); the plan's real cost is reported.
 A second heuristic that says it is not `informative` (a landmark count
@@ -37,7 +38,7 @@ BOOST = 1000
 
 def lama(task: Task, heuristic: Heuristic, limits: SearchLimits = NO_LIMITS) -> SearchResult:
     budget = Budget(limits)
-    hff = HFF(task, unit_cost=True)
+    hff = HFF(task, unit_cost=True, negations=True)
     progress = getattr(heuristic, "progress", None)
     counter = itertools.count()
     # hff, hff preferred, second, second preferred

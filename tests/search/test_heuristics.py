@@ -107,3 +107,24 @@ def test_unit_cost_hff_with_buckets_matches_the_heap():
         assert heap[goal] == buckets[goal] > 0
         state = task.apply(state, op)
     assert unit(task.init) == len(unit.relaxed_plan(task.init)[1]) > 0
+
+
+SWITCH = """
+(define (domain switch)
+  (:requirements :negative-preconditions)
+  (:predicates (on) (done))
+  (:action off :parameters () :precondition (on) :effect (not (on)))
+  (:action finish :parameters () :precondition (not (on)) :effect (done)))
+"""
+
+
+def test_hff_with_negations_counts_undoing_what_a_condition_needs_false():
+    task = make_task(SWITCH, "(define (problem s) (:domain switch) (:init (on)) (:goal (done)))")
+    # the plain relaxation assumes (not (on)): one step; with negations, two
+    assert HFF(task)(task.init) == 1.0
+    with_negations = HFF(task, unit_cost=True, negations=True)
+    assert with_negations(task.init) == 2.0
+    assert {task.operators[i].name for i in with_negations.relaxed_plan(task.init)[1]} == {
+        "(off)", "(finish)"}
+    after = task.apply(task.init, task.operator("(off)"))
+    assert with_negations(after) == 1.0
