@@ -19,7 +19,7 @@ from pathlib import Path
 from tampcli.errors import ExitCode, InputError, UsageError
 from tampcli.pddl.load import load
 from tampcli.search.eliminate import eliminate_redundant
-from tampcli.search.heuristics import HEURISTICS
+from tampcli.search.heuristics import HEURISTICS, HFF
 from tampcli.search.searches import SEARCHES, SearchLimits
 from tampcli.task.ground import ground
 
@@ -162,8 +162,14 @@ def _anytime(task, plan, best, args, deadline, stats: dict, ui):
     found = [{"cost": best[1], "weight": None, "seconds": stats["seconds"]}]
     _show(best, args, task, ui)
     left = None if deadline is None else max(deadline - time.perf_counter(), 1e-3)
-    name = args.heuristic if args.heuristic and args.heuristic != "lmcount" else "hff"
-    for step in improve(task, plan, lambda t: _heuristic(name, t), left):
+    if args.heuristic and args.heuristic != "lmcount":
+        def make(t):
+            return _heuristic(args.heuristic, t)
+    else:
+        # h_FF on real costs, aware of what conditions need false, as lama's is
+        def make(t):
+            return HFF(t, negations=True)
+    for step in improve(task, plan, make, left):
         if not isinstance(step, Improvement):
             stats["anytime_end"] = step.reason
             break
