@@ -49,10 +49,10 @@ class LandmarkCount:
         self.landmarks: tuple[frozenset[int], ...] = tuple(landmarks)
         n = len(self.landmarks)
         # a fact may belong to several landmarks (disjunctive ones)
-        self.bit: dict[int, int] = {}
+        self.bit = [0] * len(task.facts)  # per fact: the landmarks it belongs to
         for i, node in enumerate(self.landmarks):
             for f in node:
-                self.bit[f] = self.bit.get(f, 0) | 1 << i
+                self.bit[f] |= 1 << i
         self.all = (1 << n) - 1
         goal_facts = task.goal.pos
         self.goal_mask = sum(1 << i for i, node in enumerate(self.landmarks)
@@ -86,9 +86,7 @@ class LandmarkCount:
         bit = self.bit
         mask = 0
         for f in state:
-            b = bit.get(f)
-            if b:
-                mask |= b
+            mask |= bit[f]
         return mask
 
     def progress(self, parent, state) -> None:

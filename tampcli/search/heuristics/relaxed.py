@@ -205,12 +205,14 @@ class RelaxedTask:
                     while len(buckets) <= c:
                         buckets.append([])
                     buckets[c].append(q)
+        n_buckets = len(buckets)
         c = 0
-        while c < len(buckets):
+        while c < n_buckets:
             bucket = buckets[c]
             # lowest fact first, as the heap pops (c, f): the supporters, hence
             # the relaxed plans and preferred operators, are the heap's own
-            bucket.sort(reverse=True)
+            if len(bucket) > 1:
+                bucket.sort(reverse=True)
             while bucket:
                 f = bucket.pop()
                 if dist[f] != c:
@@ -229,8 +231,9 @@ class RelaxedTask:
                                 supporter[q] = a
                                 if q == goal:
                                     return dist, supporter
-                                while len(buckets) <= nc:
-                                    buckets.append([])
+                                if nc >= n_buckets:
+                                    buckets.extend([] for _ in range(nc + 1 - n_buckets))
+                                    n_buckets = nc + 1
                                 buckets[nc].append(q)
             c += 1
         return dist, supporter
