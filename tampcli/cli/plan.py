@@ -34,7 +34,8 @@ def add_parser(p) -> None:
     p.add_argument("--search", choices=sorted(SEARCHES), default=None,
                    help="search algorithm (default lama: lazy greedy search alternating h_FF "
                         "with the landmark count, preferred operators from h_FF, as Fast "
-                        "Downward's lama-first; astar for optimal plans)")
+                        "Downward's lama-first; astar for optimal plans); with -k 1 every "
+                        "redundant step is then removed (greedy action elimination)")
     p.add_argument("--heuristic", choices=sorted(HEURISTICS), default=None,
                    help="heuristic (default: lmcount with lama, alternated with h_FF; lmcut "
                         "with astar/wastar; hff otherwise)")
