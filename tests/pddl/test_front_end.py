@@ -14,9 +14,9 @@ TWICE1 = HERE / "twice_typed" / "p01.pddl"
 MALFORMED = HERE / "malformed"
 BASE = MALFORMED / "base-domain.pddl"
 
-# The first problem of every IPC folder, and of every per-problem domain file.
+# Every vendored IPC domain file, with the first problem that uses it.
 _FIRST: dict = {}
-for _domain, _problem in ipc.pairs(first=3):
+for _domain, _problem in ipc.pairs():
     _FIRST.setdefault(_domain, (_domain, _problem))
 FIRSTS = sorted(_FIRST.values())
 MALFORMED_PROBLEMS = sorted(p for p in MALFORMED.glob("prob-*.pddl")
