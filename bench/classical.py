@@ -13,6 +13,8 @@ would measure the other jobs as much as the planners. `--jobs` problems run
 at a time, each problem's two runs back to back in one worker, so both
 planners see the same load. Afterwards `plan --anytime --time-limit
 ANYTIME_LIMIT` runs on the first ANYTIME_PER_DOMAIN problems of each domain.
+Our plans are validated (tampcli's validator, outside the timing); an invalid
+one would count as unsolved.
 """
 
 from __future__ import annotations
@@ -98,9 +100,31 @@ def run_ours(domain: Path, problem: Path, limit: float) -> dict:
     if proc is None or proc.returncode != 0 or not proc.stdout.strip():
         return {"solved": False, "seconds": seconds, "cpu": cpu, "note": _why(proc)}
     data = json.loads(proc.stdout.strip().splitlines()[-1])
-    return {"solved": True, "seconds": seconds, "cpu": cpu, "cost": data["plans"][0]["cost"],
+    plan = data["plans"][0]
+    problem_text = validated(domain, problem, plan["actions"], plan["cost"])
+    if problem_text:
+        return {"solved": False, "seconds": seconds, "cpu": cpu,
+                "note": f"invalid plan: {problem_text}"}
+    return {"solved": True, "seconds": seconds, "cpu": cpu, "cost": plan["cost"],
             "expanded": data["stats"].get("expanded"),
             "eliminated": data["stats"].get("eliminated", 0)}
+
+
+def validated(domain: Path, problem: Path, actions: list[str], cost: float) -> str | None:
+    """Why our plan is not a valid plan of the stated cost (None when it is), checked
+    in this process with tampcli's own validator, outside the timing."""
+    if str(ROOT) not in sys.path:
+        sys.path.insert(0, str(ROOT))
+    from tampcli.pddl import parser
+    from tampcli.search.validate import validate_plan
+
+    report = validate_plan(parser.parse_domain_file(str(domain)),
+                           parser.parse_problem_file(str(problem)), actions)
+    if not report.valid:
+        return report.failure.describe()
+    if abs(report.cost - cost) > 1e-6:
+        return f"cost {report.cost:g}, not the {cost:g} stated"
+    return None
 
 
 def run_fd(domain: Path, problem: Path, limit: float) -> dict:
