@@ -25,6 +25,7 @@ import math
 import os
 import re
 import resource
+import signal
 import statistics
 import subprocess
 import sys
@@ -75,22 +76,43 @@ def fd_driver() -> Path:
 
 def timed(cmd: list[str], limit: float, workdir: Path) -> tuple[subprocess.CompletedProcess | None,
                                                                  float, float]:
-    """(process or None when the wall cap struck, wall seconds, CPU seconds)."""
+    """(process or None when the wall cap struck, wall seconds, CPU seconds).
+
+    The command runs under `--measure`, which reports the CPU time of it and
+    all its descendants (FD's driver runs the translator and the search as
+    two processes): the two workers' processes would mix in this process's
+    own children usage.
+    """
     cpu_limit = math.ceil(limit)
+    usage = workdir / "cpu-seconds"
 
     def limit_cpu():
         resource.setrlimit(resource.RLIMIT_CPU, (cpu_limit, cpu_limit + 1))
 
     start = time.perf_counter()
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    proc = subprocess.Popen([PY, __file__, "--measure", str(usage), *cmd], cwd=workdir,
+                            env=ENV, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=limit_cpu, start_new_session=True)
     try:
-        proc = subprocess.run(cmd, cwd=workdir, env=ENV, capture_output=True, text=True,
-                              timeout=WALL_FACTOR * limit, preexec_fn=limit_cpu)
+        out, err = proc.communicate(timeout=WALL_FACTOR * limit)
+        done = subprocess.CompletedProcess(cmd, proc.returncode, out, err)
     except subprocess.TimeoutExpired:
-        proc = None
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.communicate()
+        done = None
     seconds = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return proc, seconds, (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    cpu = float(usage.read_text()) if usage.exists() else float(cpu_limit)
+    if done is not None and cpu > limit and done.returncode == 0:
+        done = subprocess.CompletedProcess(cmd, 128 + signal.SIGXCPU, "", "")
+    return done, seconds, cpu
+
+
+def measure(out: str, cmd: list[str]) -> int:
+    """Run `cmd`; write the CPU seconds of it and its descendants to `out`."""
+    code = subprocess.run(cmd, check=False).returncode
+    used = resource.getrusage(resource.RUSAGE_CHILDREN)
+    Path(out).write_text(f"{used.ru_utime + used.ru_stime:.3f}")
+    return code if code >= 0 else 128 - code
 
 
 def run_ours(domain: Path, problem: Path, limit: float) -> dict:
@@ -158,7 +180,7 @@ def run_anytime(domain: Path, problem: Path, limit: float) -> dict:
 def _why(proc) -> str:
     if proc is None:
         return "wall-clock cap reached"
-    if proc.returncode in (-24, 128 + 24, -9):
+    if proc.returncode in (128 + signal.SIGXCPU, 128 + signal.SIGKILL):
         return "CPU limit reached"
     tail = (proc.stderr or proc.stdout).strip().splitlines()[-1:] or [""]
     return f"exit {proc.returncode}: {tail[0][:90]}"
@@ -286,6 +308,8 @@ def report(rows: list[dict], anytime: list[dict], args, minutes: float, loads: l
 
 
 def main() -> int:
+    if len(sys.argv) > 2 and sys.argv[1] == "--measure":
+        return measure(sys.argv[2], sys.argv[3:])
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--per-domain", type=int, default=15)
     ap.add_argument("--limit", type=float, default=30.0, help="CPU seconds per run (default 30)")
