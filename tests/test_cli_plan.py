@@ -123,3 +123,47 @@ def test_top_k_writes_one_file_per_plan(cli, tmp_path):
     assert out.exists() and (tmp_path / "plan.1").exists() and (tmp_path / "plan.2").exists()
     assert _actions(out.read_text()) == plans[0]["actions"]
     assert _actions((tmp_path / "plan.2").read_text()) == plans[2]["actions"]
+
+
+ELEVATORS = IPC / "elevators-opt08-strips" / "domain.pddl"
+ELEVATORS3 = IPC / "elevators-opt08-strips" / "p03.pddl"
+
+
+def test_default_is_lama_and_drops_redundant_steps(cli):
+    run = cli("plan", GRIPPER, GRIPPER1, "--json")
+    assert run.code == 0, run.err
+    stats = json.loads(run.out)["stats"]
+    assert (stats["search"], stats["heuristic"]) == ("lama", "lmcount")
+    assert stats["eliminated"] >= 0
+
+
+def test_help_documents_lama_and_anytime(cli, capsys):
+    with pytest.raises(SystemExit):
+        cli("plan", "--help")
+    text = " ".join(capsys.readouterr().out.split())
+    assert "default lama" in text and "landmark count" in text and "--anytime" in text
+
+
+def test_anytime_prints_each_better_plan_and_out_keeps_the_best(cli, tmp_path):
+    out = tmp_path / "best.plan"
+    run = cli("plan", ELEVATORS, ELEVATORS3, "--anytime", "--time-limit", "60", "--out", out)
+    assert run.code == 0, run.err
+    costs = [int(line.split()[3]) for line in run.out.splitlines() if line.startswith("; cost")]
+    assert len(costs) >= 2 and costs == sorted(costs, reverse=True) and costs[-1] < costs[0]
+    assert out.read_text().splitlines()[-1] == f"; cost = {costs[-1]} (general cost)"
+    assert "anytime: weight" in run.err
+
+
+def test_anytime_in_json_lists_the_costs_found(cli):
+    run = cli("plan", GRIPPER, GRIPPER1, "--anytime", "--json", "--time-limit", "30")
+    assert run.code == 0, run.err
+    data = json.loads(run.out)
+    found = data["stats"]["anytime"]
+    assert found[0]["weight"] is None
+    assert [f["cost"] for f in found] == sorted((f["cost"] for f in found), reverse=True)
+    assert data["plans"][0]["cost"] == found[-1]["cost"]
+
+
+def test_anytime_needs_k_1(cli):
+    run = cli("plan", GRIPPER, GRIPPER1, "--anytime", "-k", "2")
+    assert run.code == 2 and "--anytime" in run.err

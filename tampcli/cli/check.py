@@ -15,8 +15,9 @@ from pathlib import Path
 from rich.table import Table
 
 from tampcli.errors import ExitCode, InputError
-from tampcli.pddl import ast, parser
+from tampcli.pddl import ast
 from tampcli.pddl import check as semantic
+from tampcli.pddl.load import load
 
 # Long lists (a grounded domain has thousands of actions) are cut in tables;
 # --json always has everything.
@@ -33,9 +34,8 @@ def add_parser(p) -> None:
 def run(args, ui) -> int:
     if (args.scene or args.modes) and not args.problem:
         raise InputError("--scene and --modes need a PROBLEM to check against", path="check")
-    domain = parser.parse_domain_file(args.domain)
-    problem = parser.parse_problem_file(args.problem) if args.problem else None
-    warnings = semantic.check(domain, problem)
+    loaded = load(args.domain, args.problem)
+    domain, problem, warnings = loaded.domain, loaded.problem, list(loaded.warnings)
     summary = {"status": "ok", "domain": domain_summary(domain)}
     if problem is not None:
         summary["problem"] = problem_summary(problem)

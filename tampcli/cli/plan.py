@@ -1,9 +1,14 @@
 """`tampcli plan DOMAIN PROBLEM`: symbolic planning, plans in IPC format.
 
-Defaults: with -k 1, greedy best-first search with h_FF (satisficing: fast,
-not necessarily cheapest); `--search astar` alone uses LM-cut (optimal), or
-h_max when the task has conditional effects. With -k > 1 the top-k planner
-returns the K cheapest plans and --search/--heuristic do not apply.
+Defaults: with -k 1, LAMA's first search (`lama`: lazy greedy search
+alternating h_FF, whose relaxed plans give the preferred operators, with the
+landmark count; satisficing: fast, not necessarily cheapest), then greedy
+action elimination drops every redundant step. `--anytime` then keeps
+improving the plan with weighted A* restarts (weights 5, 3, 2, 1) bounded by
+the incumbent's cost, printing each better plan, until the time limit.
+`--search astar` alone uses LM-cut (optimal), or h_max when the task has
+conditional effects. With -k > 1 the top-k planner returns the K cheapest
+plans and --search/--heuristic do not apply.
 """
 
 from __future__ import annotations
@@ -12,8 +17,9 @@ import time
 from pathlib import Path
 
 from tampcli.errors import ExitCode, InputError, UsageError
-from tampcli.pddl import parser
-from tampcli.search.heuristics import HEURISTICS
+from tampcli.pddl.load import load
+from tampcli.search.eliminate import eliminate_redundant
+from tampcli.search.heuristics import HEURISTICS, HFF
 from tampcli.search.searches import SEARCHES, SearchLimits
 from tampcli.task.ground import ground
 
@@ -26,9 +32,17 @@ def add_parser(p) -> None:
     p.add_argument("problem", help="PDDL problem file")
     p.add_argument("-k", type=int, default=1, metavar="K", help="number of plans, cheapest first (default 1)")
     p.add_argument("--search", choices=sorted(SEARCHES), default=None,
-                   help="search algorithm (default gbfs; astar for optimal plans)")
+                   help="search algorithm (default lama: lazy greedy search alternating h_FF "
+                        "with the landmark count, preferred operators from h_FF, as Fast "
+                        "Downward's lama-first; astar for optimal plans); with -k 1 every "
+                        "redundant step is then removed (greedy action elimination)")
     p.add_argument("--heuristic", choices=sorted(HEURISTICS), default=None,
-                   help="heuristic (default hff; lmcut with astar/wastar)")
+                   help="heuristic (default: lmcount with lama, alternated with h_FF; lmcut "
+                        "with astar/wastar; hff otherwise)")
+    p.add_argument("--anytime", action="store_true",
+                   help="after the first plan, search for cheaper ones (weighted A* with "
+                        "weights 5, 3, 2, 1, bounded by the best cost so far) until the time "
+                        "limit, printing each; --out keeps the best (-k 1 only)")
     p.add_argument("--weight", type=float, default=2.0, help="weight of h in wastar (default 2)")
     p.add_argument("--time-limit", type=float, default=None, metavar="S",
                    help="seconds for the search (default none)")
@@ -57,12 +71,13 @@ def run(args, ui) -> int:
     seconds: dict[str, float] = {}
 
     start = time.perf_counter()
-    domain = parser.parse_domain_file(args.domain)
-    problem = parser.parse_problem_file(args.problem)
+    loaded = load(args.domain, args.problem)
     seconds["parse"] = time.perf_counter() - start
+    for warning in loaded.warnings:
+        ui.warn(warning)
 
     start = time.perf_counter()
-    task = ground(domain, problem)
+    task = ground(loaded.domain, loaded.problem)
     seconds["ground"] = time.perf_counter() - start
     stats: dict = {"facts": len(task.facts), "operators": len(task.operators),
                    "axioms": len(task.axioms)}
@@ -71,6 +86,8 @@ def run(args, ui) -> int:
     if args.k == 1:
         status, plans, search_stats, reason = _single(task, args, limits, ui)
     else:
+        if args.anytime:
+            raise UsageError("--anytime applies to -k 1 only", key="--anytime")
         status, plans, search_stats, reason = _top_k(task, args, ui)
     seconds["search"] = time.perf_counter() - start
     stats.update(search_stats)
@@ -87,7 +104,7 @@ def run(args, ui) -> int:
             out["message"] = reason
         ui.emit_json(out)
     else:
-        if plans:
+        if plans and not args.anytime:
             ui.plain("\n".join(plan_text(actions, cost, task.unit_cost) for actions, cost in plans))
         ui.info(f"parse {seconds['parse']:.3f} s, ground {seconds['ground']:.3f} s "
                 f"({stats['facts']} facts, {stats['operators']} operators"
@@ -104,27 +121,74 @@ def run(args, ui) -> int:
 
 
 def _single(task, args, limits: SearchLimits, ui):
-    search = args.search or "gbfs"
+    search = args.search or "lama"
     name = args.heuristic
     if name is None:
-        name = OPTIMAL_HEURISTIC if search in ("astar", "wastar") else "hff"
+        name = {"lama": "lmcount", "astar": OPTIMAL_HEURISTIC,
+                "wastar": OPTIMAL_HEURISTIC}.get(search, "hff")
         if name == OPTIMAL_HEURISTIC and task.has_conditional_effects:
             name = FALLBACK_OPTIMAL_HEURISTIC
-    try:
-        heuristic = HEURISTICS[name](task)
-    except InputError as err:
-        err.path = err.path or "tampcli plan"
-        raise
+    heuristic = _heuristic(name, task)
     if search == "astar" and not heuristic.admissible:
         ui.warn(f"A* with the inadmissible heuristic {name}: the plan may not be optimal")
+    start = time.perf_counter()
     result = SEARCHES[search](task, heuristic, limits)
     stats = dict(result.stats)
     stats["search"], stats["heuristic"] = search, name
     reason = stats.pop("reason", None)
-    if result.status == "solved":
-        return "solved", [([op.name for op in result.plan], result.cost)], stats, None
-    word = "unsolvable" if result.status == "unsolvable" else "limit"
-    return result.status, [], stats, f"no plan: {word} ({reason})"
+    if result.status != "solved":
+        word = "unsolvable" if result.status == "unsolvable" else "limit"
+        return result.status, [], stats, f"no plan: {word} ({reason})"
+    deadline = None if args.time_limit is None else start + args.time_limit
+    plan = eliminate_redundant(task, result.plan, deadline)
+    stats["eliminated"] = len(result.plan) - len(plan)
+    best = ([op.name for op in plan], float(sum(op.cost for op in plan)))
+    if args.anytime:
+        best = _anytime(task, plan, best, args, deadline, stats, ui)
+    return "solved", [best], stats, None
+
+
+def _heuristic(name: str, task):
+    try:
+        return HEURISTICS[name](task)
+    except InputError as err:
+        err.path = err.path or "tampcli plan"
+        raise
+
+
+def _anytime(task, plan, best, args, deadline, stats: dict, ui):
+    """Improve `best` until the deadline; each better plan is printed (and written) at once."""
+    from tampcli.search.anytime import Improvement, improve
+
+    found = [{"cost": best[1], "weight": None, "seconds": stats["seconds"]}]
+    _show(best, args, task, ui)
+    left = None if deadline is None else max(deadline - time.perf_counter(), 1e-3)
+    if args.heuristic and args.heuristic != "lmcount":
+        def make(t):
+            return _heuristic(args.heuristic, t)
+    else:
+        # h_FF on real costs, aware of what conditions need false, as lama's is
+        def make(t):
+            return HFF(t, negations=True)
+    for step in improve(task, plan, make, left):
+        if not isinstance(step, Improvement):
+            stats["anytime_end"] = step.reason
+            break
+        best = ([op.name for op in step.plan], step.cost)
+        found.append({"cost": step.cost, "weight": step.weight,
+                      "seconds": round(stats["seconds"] + step.seconds, 4)})
+        _show(best, args, task, ui)
+        if not ui.json:
+            ui.info(f"anytime: weight {step.weight:g} found cost {_format_cost(step.cost)}")
+    stats["anytime"] = found
+    return best
+
+
+def _show(best, args, task, ui) -> None:
+    if not ui.json:
+        ui.plain(plan_text(best[0], best[1], task.unit_cost))
+    if args.out:
+        _write_plans(args.out, [best], task.unit_cost)
 
 
 def _top_k(task, args, ui):

@@ -32,7 +32,7 @@ def check(domain: ast.Domain, problem: ast.Problem | None = None) -> list[str]:
         checker = _ProblemChecker(dom, problem)
         _refuse_unsupported(report, "problem", checker.src)
         checker.run()
-    return _requirement_warnings(report, domain, problem)
+    return dom.warnings + _requirement_warnings(report, domain, problem)
 
 
 def requirements(domain: ast.Domain, problem: ast.Problem | None = None) -> reqs.RequirementReport:
@@ -160,6 +160,7 @@ class _DomainChecker:
         self.constants: dict[str, tuple[str, ...]] = {}
         self.derived = frozenset(axiom.name for axiom in domain.axioms)
         self.declared_types: frozenset[str] = frozenset({OBJECT})
+        self.warnings: list[str] = []
 
     def run(self) -> None:
         d = self.domain
@@ -193,9 +194,19 @@ class _DomainChecker:
     # ---- declarations
 
     def _types(self) -> None:
+        # A type declared twice is a subtype of every parent it is given, as
+        # in Fast Downward's translator (IPC storage declares `area` under
+        # `object` and again under `surface`); ambiguous, so it is warned about.
         seen: dict[str, ast.Typed] = {}
         for typed in self.domain.types:
-            self._duplicate(seen, typed.name, typed.span, "type")
+            first = seen.get(typed.name)
+            if first is not None:
+                parents = sorted({*first.types, *typed.types})
+                self.warnings.append(
+                    f"{_where(self.domain.path, typed.span)}: type {typed.name} is declared "
+                    f"again (first on line {first.span.line}); it is read as a subtype of "
+                    f"{' and '.join(parents)}")
+                continue
             seen[typed.name] = typed
         for typed in self.domain.types:
             for parent in typed.types:

@@ -208,9 +208,12 @@ class Task:
         # add-after-delete: a fact both added and deleted ends up true
         return (state - delete) | add
 
-    def successors(self, state: frozenset[int]) -> list[tuple[Operator, frozenset[int]]]:
-        """(op, successor) for every applicable op, computing the axioms once."""
-        closed = self.closure(state)
+    def successors(self, state: frozenset[int],
+                   closed: frozenset[int] | None = None) -> list[tuple[Operator, frozenset[int]]]:
+        """(op, successor) for every applicable op, computing the axioms once
+        (not at all when the caller has `closed`, the state's closure)."""
+        if closed is None:
+            closed = self.closure(state)
         apply = self._apply
         return [(op, apply(state, closed, op)) for op in self._applicable(closed)]
 

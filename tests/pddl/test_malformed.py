@@ -47,7 +47,6 @@ CATALOG = [
     ("sem-type-cycle.pddl", "semantic", 3, 11, "its own ancestor"),
     ("sem-duplicate-action.pddl", "semantic", 5, 3, "duplicate action a (first declared on line 3)"),
     ("sem-duplicate-predicate.pddl", "semantic", 4, 16, "duplicate predicate p"),
-    ("sem-duplicate-type.pddl", "semantic", 4, 11, "duplicate type block"),
     ("sem-duplicate-constant.pddl", "semantic", 5, 15, "duplicate constant home (first declared on line 4)"),
     ("sem-duplicate-parameter.pddl", "semantic", 4, 24, "duplicate parameter ?x in action a"),
     ("sem-free-variable.pddl", "semantic", 5, 26, "free variable ?y"),

@@ -27,7 +27,8 @@ def fork(goal="(and (g1) (g2))"):
 def test_known_values_on_the_fork():
     task = fork()
     values = {name: HEURISTICS[name](task)(task.init) for name in HEURISTICS}
-    assert values == {"hmax": 2.0, "hadd": 4.0, "hff": 3.0, "lmcut": 3.0, "blind": 1.0}
+    assert values == {"hmax": 2.0, "hadd": 4.0, "hff": 3.0, "lmcut": 3.0, "blind": 1.0,
+                      "lmcount": 3.0}
 
 
 def test_goal_states_are_zero_and_dead_ends_infinite():
@@ -92,3 +93,38 @@ def test_heuristics_see_through_axioms():
     values = {name: HEURISTICS[name](task)(task.init) for name in ("hmax", "hadd", "hff", "lmcut")}
     assert all(0 < v < math.inf for v in values.values())
     assert values["hmax"] <= values["lmcut"] <= 8  # optimal cost 8 (REFERENCE.csv)
+
+
+def test_unit_cost_hff_with_buckets_matches_the_heap():
+    # the bucket queue of whole-number costs must give h_add's own values
+    task = ipc_task("elevators-opt08-strips", "p03.pddl")
+    unit = HFF(task, unit_cost=True)
+    goal = unit.relaxed.goal
+    state = task.init
+    for op in astar(task, HFF(task)).plan:
+        heap, _ = unit.relaxed.explore(state, additive=True, costs=unit.costs)
+        buckets, _ = unit.relaxed.explore(state, additive=True, costs=unit.costs, integral=True)
+        assert heap[goal] == buckets[goal] > 0
+        state = task.apply(state, op)
+    assert unit(task.init) == len(unit.relaxed_plan(task.init)[1]) > 0
+
+
+SWITCH = """
+(define (domain switch)
+  (:requirements :negative-preconditions)
+  (:predicates (on) (done))
+  (:action off :parameters () :precondition (on) :effect (not (on)))
+  (:action finish :parameters () :precondition (not (on)) :effect (done)))
+"""
+
+
+def test_hff_with_negations_counts_undoing_what_a_condition_needs_false():
+    task = make_task(SWITCH, "(define (problem s) (:domain switch) (:init (on)) (:goal (done)))")
+    # the plain relaxation assumes (not (on)): one step; with negations, two
+    assert HFF(task)(task.init) == 1.0
+    with_negations = HFF(task, unit_cost=True, negations=True)
+    assert with_negations(task.init) == 2.0
+    assert {task.operators[i].name for i in with_negations.relaxed_plan(task.init)[1]} == {
+        "(off)", "(finish)"}
+    after = task.apply(task.init, task.operator("(off)"))
+    assert with_negations(after) == 1.0

@@ -36,14 +36,19 @@ class HFF:
     """Cost of a relaxed plan read off the h_add best supporters.
 
     An operator counts once however many of its relaxed copies (conditional
-    effects) the relaxed plan uses.
+    effects) the relaxed plan uses. With `unit_cost` every operator costs 1
+    (LAMA's first search: the number of steps left, whatever the costs);
+    with `negations` the facts a condition needs false are facts to achieve
+    (see relaxed.py).
     """
 
     admissible = False
 
-    def __init__(self, task: Task):
-        self.relaxed = RelaxedTask(task)
-        self.op_cost = [op.cost for op in task.operators]
+    def __init__(self, task: Task, unit_cost: bool = False, negations: bool = False):
+        self.relaxed = r = RelaxedTask(task, negations=negations)
+        self.op_cost = [1.0 if unit_cost else op.cost for op in task.operators]
+        self.costs = [1 if op >= 0 else 0 for op in r.op] if unit_cost else None
+        self.integral = unit_cost
 
     def __call__(self, state) -> float:
         return self.relaxed_plan(state)[0]
@@ -51,7 +56,8 @@ class HFF:
     def relaxed_plan(self, state) -> tuple[float, set[int]]:
         """(cost, operator indices) of the relaxed plan; (inf, empty) at a dead end."""
         relaxed = self.relaxed
-        dist, supporter = relaxed.explore(state, additive=True)
+        dist, supporter = relaxed.explore(relaxed.seed(state), additive=True, costs=self.costs,
+                                            integral=self.integral)
         if dist[relaxed.goal] == INF:
             return INF, set()
         pre, op_of = relaxed.pre, relaxed.op

@@ -8,6 +8,12 @@ auxiliary fact with one achiever per disjunct, so conditions stay linear in
 size. Negative literals are dropped (they are assumed true), which keeps
 every value below a relaxation of the real task: h_max and LM-cut stay
 admissible. A single goal fact is reached by a zero-cost goal action.
+
+With `negations`, a negated basic fact `not p` that some condition needs
+becomes a fact of its own instead (as Fast Downward's translator does): true
+in the states without p, added by the actions that delete p. Exploring then
+starts from `seed(state)`. Still a relaxation (every real plan is a relaxed
+one), and a better informed one where plans must undo things.
 """
 
 from __future__ import annotations
@@ -20,7 +26,7 @@ INF = float("inf")
 
 
 class RelaxedTask:
-    def __init__(self, task: Task, init_fact: bool = False):
+    def __init__(self, task: Task, init_fact: bool = False, negations: bool = False):
         self.task = task
         self.n_facts = len(task.facts)
         self.pre: list[tuple[int, ...]] = []
@@ -28,15 +34,23 @@ class RelaxedTask:
         self.cost: list[float] = []
         self.op: list[int] = []  # operator index, or -1 for axioms and auxiliary actions
         self._aux: dict = {}
+        self.negated: dict[int, int] = {}  # basic fact -> the fact "it does not hold"
+        if negations:
+            for f in sorted(_negated_facts(task)):
+                self.negated[f] = self._new_fact()
+        negated = self.negated
         for i, op in enumerate(task.operators):
             base = self._relax(op.pre)
-            if op.add:
-                self._action(base, op.add, op.cost, i)
+            adds = set(op.add) | {negated[f] for f in op.delete if f in negated}
+            if adds:
+                self._action(base, adds, op.cost, i)
             for eff in op.cond_effects:
-                if eff.add:
-                    self._action(base | self._relax(eff.condition), eff.add, op.cost, i)
+                adds = set(eff.add) | {negated[f] for f in eff.delete if f in negated}
+                if adds:
+                    self._action(base | self._relax(eff.condition), adds, op.cost, i)
         for ax in task.axioms:
-            self._action(set(ax.pos), (ax.head,), 0.0, -1)
+            self._action(set(ax.pos) | {negated[f] for f in ax.neg if f in negated},
+                         (ax.head,), 0.0, -1)
         self.goal = self._new_fact()
         self._action(self._relax(task.goal), (self.goal,), 0.0, -1)
         # LM-cut wants every action to have a precondition: give the
@@ -64,15 +78,26 @@ class RelaxedTask:
         self.cost.append(float(cost))
         self.op.append(op)
 
+    def seed(self, state) -> list[int]:
+        """The relaxed facts true in `state`: its own, and the negations of the others."""
+        if not self.negated:
+            return list(state)
+        return [*state, *(nf for f, nf in self.negated.items() if f not in state)]
+
     def _relax(self, cond: Condition) -> set[int]:
         facts = set(cond.pos)
+        negated = self.negated
+        if negated:
+            facts.update(negated[f] for f in cond.neg if f in negated)
         for tree in cond.extra:
             facts |= self._relax_tree(tree)
         return facts
 
     def _relax_tree(self, tree) -> set[int]:
         if tree.__class__ is int:
-            return {tree} if tree >= 0 else set()
+            if tree >= 0:
+                return {tree}
+            return {self.negated[~tree]} if ~tree in self.negated else set()
         tag, parts = tree
         if tag == "and":
             out: set[int] = set()
@@ -89,14 +114,20 @@ class RelaxedTask:
 
     # ------------------------------------------------------------ explorations
 
-    def explore(self, state, additive: bool, costs=None):
+    def explore(self, state, additive: bool, costs=None, integral: bool = False):
         """h_add (additive) or h_max costs of every fact from `state`.
 
         Returns (dist, supporter): supporter[f] is the action that reached f
-        cheapest, -1 for the state's facts and None for unreached ones;
-        stops once the goal fact is settled.
+        cheapest, -1 for the state's facts and None for unreached ones.
+        Stops as soon as the goal fact is reached: its one achiever, the goal
+        action, fires only once every goal condition is settled, so its value
+        is final then (with h_add it is far above the goal conditions' own
+        costs, and exploring up to it would settle nearly every fact). `integral`: every cost is a
+        whole number, so h_add can use a bucket queue in place of the heap.
         """
         costs = self.cost if costs is None else costs
+        if additive and integral:
+            return self._explore_buckets(state, costs)
         pre_of, adds, goal = self.pre_of, self.add, self.goal
         unsat = self.pre_count[:]
         acc = [0.0] * self.n_actions
@@ -142,8 +173,94 @@ class RelaxedTask:
                             if nc < dist[q]:
                                 dist[q] = nc
                                 supporter[q] = a
+                                if q == goal:
+                                    return dist, supporter
                                 if nc == c:
                                     level.append(q)
                                 else:
                                     push(heap, (nc, q))
         return dist, supporter
+
+    def _explore_buckets(self, state, costs):
+        """h_add with whole-number costs: buckets of facts by cost, in place of the heap."""
+        pre_of, adds, goal = self.pre_of, self.add, self.goal
+        unsat = self.pre_count[:]
+        acc = [0] * self.n_actions
+        dist = [INF] * self.n_facts
+        supporter: list = [None] * self.n_facts
+        for f in state:
+            dist[f] = 0
+            supporter[f] = -1
+        buckets: list[list[int]] = [list(state)]
+        if self.init_fact is not None:
+            dist[self.init_fact] = 0
+            supporter[self.init_fact] = -1
+            buckets[0].append(self.init_fact)
+        for a in self.no_pre:
+            c = int(costs[a])
+            for q in adds[a]:
+                if c < dist[q]:
+                    dist[q] = c
+                    supporter[q] = a
+                    while len(buckets) <= c:
+                        buckets.append([])
+                    buckets[c].append(q)
+        n_buckets = len(buckets)
+        c = 0
+        while c < n_buckets:
+            bucket = buckets[c]
+            # lowest fact first, as the heap pops (c, f): the supporters, hence
+            # the relaxed plans and preferred operators, are the heap's own
+            if len(bucket) > 1:
+                bucket.sort(reverse=True)
+            while bucket:
+                f = bucket.pop()
+                if dist[f] != c:
+                    continue
+                if f == goal:
+                    return dist, supporter
+                for a in pre_of[f]:
+                    left = unsat[a] - 1
+                    unsat[a] = left
+                    acc[a] += c
+                    if left == 0:
+                        nc = acc[a] + costs[a]
+                        for q in adds[a]:
+                            if nc < dist[q]:
+                                dist[q] = nc
+                                supporter[q] = a
+                                if q == goal:
+                                    return dist, supporter
+                                if nc >= n_buckets:
+                                    buckets.extend([] for _ in range(nc + 1 - n_buckets))
+                                    n_buckets = nc + 1
+                                buckets[nc].append(q)
+            c += 1
+        return dist, supporter
+
+
+def _negated_facts(task: Task) -> set[int]:
+    """The basic facts some condition needs false (derived ones cannot be deleted)."""
+    found: set[int] = set()
+
+    def tree(t) -> None:
+        if t.__class__ is int:
+            if t < 0:
+                found.add(~t)
+            return
+        for part in t[1]:
+            tree(part)
+
+    def condition(c: Condition) -> None:
+        found.update(c.neg)
+        for t in c.extra:
+            tree(t)
+
+    for op in task.operators:
+        condition(op.pre)
+        for eff in op.cond_effects:
+            condition(eff.condition)
+    condition(task.goal)
+    for ax in task.axioms:
+        found.update(ax.neg)
+    return found - task.derived

@@ -1,4 +1,0 @@
-(define (domain d)
-  (:requirements :typing)
-  (:types block table
-          block))

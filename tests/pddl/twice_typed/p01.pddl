@@ -1,0 +1,7 @@
+(define (problem twice-typed-1)
+  (:domain twice-typed)
+  (:objects k - crane r - room s1 s2 - stock d - dock x - crate)
+  (:init (idle k) (at k d) (next d s1) (next s1 d) (next d s2) (next s2 d)
+         (next s1 s2) (next s2 s1)
+         (on x s1) (inside s1 r) (inside s2 r) (inside x r) (free s2))
+  (:goal (on x s2)))
