@@ -20,7 +20,8 @@ from typing import TYPE_CHECKING
 
 from tampcli.bnb import BnBOptions, BnBResult, Event, branch_and_bound
 from tampcli.optimize.options import OptimizeOptions
-from tampcli.pddl import ast, parser
+from tampcli.pddl import ast
+from tampcli.pddl.load import load
 from tampcli.solution import Phase, Solution
 
 if TYPE_CHECKING:  # numpy, pybullet and FCL behind these: imported only for a scene
@@ -180,9 +181,8 @@ def read_inputs(paths: InputPaths, timers: Timers) -> ParsedInputs:
     """Parse and check the PDDL, ground it, and load the scene and modes when the
     problem has a scene."""
     with timers.stage("parse"):
-        domain = parser.parse_domain_file(paths.domain)
-        problem = parser.parse_problem_file(paths.problem)
-        _check(domain, problem)
+        loaded = load(paths.domain, paths.problem)
+        domain, problem = loaded.domain, loaded.problem
     with timers.stage("ground"):
         from tampcli.task.ground import ground
 
@@ -207,14 +207,6 @@ def read_inputs(paths: InputPaths, timers: Timers) -> ParsedInputs:
         modes = load_modes(modes_file, domain)
         scene, source = read_scene(scene_file, domain, problem, modes=modes)
     return ParsedInputs(found, domain, problem, task, scene, modes, source)
-
-
-def _check(domain, problem) -> None:
-    try:
-        from tampcli.pddl import check
-    except ImportError:
-        return
-    check.check(domain, problem)
 
 
 def _solve_symbolic(inputs: ParsedInputs, options: SolveOptions, timers: Timers) -> Solution:
@@ -245,7 +237,9 @@ class _Geometry:
 def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
+        from tampcli.bnb.eliminate import eliminate_useless
         from tampcli.optimize.blockers import blocker_of
+        from tampcli.search.eliminate import without_step
         from tampcli.search.learned import LearningSource
         from tampcli.search.topk import TopK
 
@@ -274,6 +268,9 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
                               is_geometric=lambda op: modes.get_mode(op.action).geometric,
                               on_event=on_event, learn=learn)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
+    result = eliminate_useless(result, evaluate,
+                               lambda ops, i: without_step(inputs.task, ops, i),
+                               options.bnb.symbolic_weight, deadline)
     timers.add("optimize", result.stats.get("optimize_seconds", 0.0))
     timers.add("bnb", time.perf_counter() - bnb_start)
     first = result.stats.get("first_solution_seconds")

@@ -3,10 +3,10 @@
 After the search, each action of the incumbent is dropped in turn, with every
 later action that is then inapplicable (`without_step`, symbolic); when the
 rest still reaches the goal, the shorter skeleton goes through the three
-stages like any other. If its trajectory is feasible, it replaces the
-incumbent, whatever its objective: a plan with an action that can go is never
-the answer (the issue it answers: a robot that ends holding a block it had
-no reason to touch). Passes repeat until nothing drops.
+stages like any other (a record of its own in the skeleton list). If its
+trajectory is feasible, it replaces the incumbent, whatever its objective: a
+plan with an action that can go is never the answer (the robot must not end
+holding a block it had no reason to touch). Passes repeat until nothing drops.
 """
 
 from __future__ import annotations
@@ -15,6 +15,8 @@ import dataclasses
 import time
 from collections.abc import Callable, Sequence
 from typing import Any
+
+from tampcli.solution import SkeletonRecord
 
 STAGES = ("final", "keyframes", "path")
 
@@ -35,24 +37,36 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
             shorter = without_step(plan, i)
             if shorter is None:
                 continue
-            path = _feasible_path(tuple(shorter), evaluate)
+            shorter = tuple(shorter)
+            symbolic = float(sum(op.cost for op in shorter))
+            started = time.perf_counter()
+            stage, path = _last_stage(shorter, evaluate)
+            objective = None if path is None else float(path.cost) + symbolic_weight * symbolic
+            result.skeletons.append(SkeletonRecord(
+                len(result.skeletons) + 1, tuple(op.name for op in shorter), symbolic,
+                "infeasible" if path is None else "solved", symbolic_weight * symbolic,
+                "proved", stage, None if path is None else float(path.cost), objective,
+                time.perf_counter() - started,
+                f"the answer less {plan[i].name} (action elimination)"))
             if path is None:
                 continue
-            symbolic = float(sum(op.cost for op in shorter))
             dropped += len(plan) - len(shorter)
+            low = result.lower_bound
             result = dataclasses.replace(
-                result, best=path, best_plan=tuple(shorter), best_symbolic_cost=symbolic,
-                best_objective=float(path.cost) + symbolic_weight * symbolic)
+                result, best=path, best_plan=shorter, best_symbolic_cost=symbolic,
+                best_objective=objective, optimal=False,
+                lower_bound=None if low is None else min(low, objective))
             changed = True
             break
     result.stats["actions_eliminated"] = dropped
     return result
 
 
-def _feasible_path(ops, evaluate):
+def _last_stage(ops, evaluate):
+    """(the last stage reached, its path-stage result or None when one failed)."""
     warm = None
     for stage in STAGES:
         warm = evaluate(ops, stage, warm)
         if warm.status != "solved":
-            return None
-    return warm
+            return stage, None
+    return "path", warm

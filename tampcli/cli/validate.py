@@ -19,7 +19,7 @@ import os
 import sys
 
 from tampcli.errors import ExitCode, UsageError
-from tampcli.pddl import parser
+from tampcli.pddl.load import load
 from tampcli.search.plan_text import parse_plan, parse_step
 from tampcli.search.validate import PlanReport, read_plan_file, validate_plan
 from tampcli.solution_read import read_solution
@@ -39,8 +39,10 @@ def add_parser(p) -> None:
 
 
 def run(args, ui) -> int:
-    domain = parser.parse_domain_file(args.domain)
-    problem = parser.parse_problem_file(args.problem)
+    loaded = load(args.domain, args.problem)
+    for warning in loaded.warnings:
+        ui.warn(warning)
+    domain, problem = loaded.domain, loaded.problem
     text = read_plan_file(args.plan)
     checked = None
     is_solution = args.plan.endswith(".json") or text.lstrip().startswith("{")

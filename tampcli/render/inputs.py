@@ -46,15 +46,15 @@ def load_inputs(source: Solution | str | Path) -> RenderInputs:
         raise SolutionFileError("names no scene file: a symbolic solution has nothing to "
                                 "render", path, key="scene")
     from tampcli.geometry.scene import load_scene
-    from tampcli.pddl import parser
+    from tampcli.pddl.load import load
 
     domain = problem = None
     domain_path = solution_file.resolve_input(anchor, sol.domain)
     problem_path = solution_file.resolve_input(anchor, sol.problem)
     if domain_path is not None and domain_path.is_file():
-        domain = parser.parse_domain_file(str(domain_path))
-    if problem_path is not None and problem_path.is_file():
-        problem = parser.parse_problem_file(str(problem_path))
+        has_problem = problem_path is not None and problem_path.is_file()
+        loaded = load(str(domain_path), str(problem_path) if has_problem else None)
+        domain, problem = loaded.domain, loaded.problem
     scene_path = solution_file.resolve_input(anchor, sol.scene)
     if not scene_path.is_file():
         raise SolutionFileError(f"scene file not found: {sol.scene} (looked beside the "

@@ -38,6 +38,16 @@ def eliminate_redundant(task: Task, plan: Sequence[Operator],
     return tuple(best)
 
 
+def without_step(task: Task, plan: Sequence[Operator], skip: int) -> list[Operator] | None:
+    """The plan less step `skip` and every later step then inapplicable, when the rest
+    still reaches the goal; else None (one move of the elimination, for callers that
+    judge each candidate further, like `solve`'s geometry)."""
+    state = task.init
+    for op in plan[:skip]:
+        state = task.apply(state, op)
+    return _without(task, list(plan), skip, state)
+
+
 def _states(task: Task, plan: list[Operator]) -> list[frozenset[int]]:
     """The state before each step (and after the last)."""
     state = task.init
