@@ -98,47 +98,115 @@ def stays_up(rows: RowSet, step: str, P: PoseX) -> None:
     rows.add(np.array([P.az[2] - DOWN]), P.through(g), Label(step, "upside down", ""))
 
 
-def apart_disks(rows: RowSet, step: str, P: PoseX, rp: float, Q: PoseX, rq: float,
-                other: str) -> None:
-    """Footprint circles apart: |P - Q|_xy >= rp + rq (conservative for boxes)."""
-    d = P.pos[:2] - Q.pos[:2]
-    n = float(np.linalg.norm(d))
-    u = d / n if n > 1e-12 else np.array([1.0, 0.0])
-    gp, gq = _g(1), _g(1)
-    gp[0, 0:2] = u
-    gq[0, 0:2] = -u
+GAP = 1e-3  # m: footprints of two resting objects kept this far apart (touching is allowed)
+
+
+def corner_jac(a: float, b: float, hx: float, hy: float) -> np.ndarray:
+    """d corner / d v (2, 12) of the footprint corner pos + a hx ax + b hy ay."""
+    g = np.zeros((2, 12))
+    g[0, 0] = g[1, 1] = 1.0
+    g[0, 3] = g[1, 4] = a * hx
+    g[0, 6] = g[1, 7] = b * hy
+    return g
+
+
+def corners(P: PoseX, info: BodyInfo) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The footprint corners of a box: (xy, d xy / d v)."""
+    hx, hy = info.half[0], info.half[1]
+    return [(P.pos[:2] + a * hx * P.ax[:2] + b * hy * P.ay[:2], corner_jac(a, b, hx, hy))
+            for a in (-1.0, 1.0) for b in (-1.0, 1.0)]
+
+
+def _pair_jac(P: PoseX, gp: np.ndarray, Q: PoseX, gq: np.ndarray):
     jac = P.through(gp)
     for k, v in Q.through(gq).items():
         jac[k] = jac[k] + v if k in jac else v
-    rows.add(np.array([n - rp - rq]), jac, Label(step, f"overlaps {other}"))
+    return jac
 
 
-def apart_rect(rows: RowSet, step: str, P: PoseX, rp: float, rect: BodyInfo) -> None:
-    """Footprint circle outside a fixed rectangle (signed distance from its centre)."""
-    c, s = np.cos(rect.pose[3]), np.sin(rect.pose[3])
-    d = P.pos[:2] - np.asarray(rect.pose[:2])
-    local = np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])
-    half = np.asarray(rect.half[:2])
-    if rect.disk:
+def _sat(P: PoseX, pinfo: BodyInfo, Q: PoseX, qinfo: BodyInfo):
+    """Separation of two box footprints: the largest gap along an edge normal of either.
+
+    Positive: apart by at least that much along that axis; negative: minus the
+    penetration depth (separating axis theorem, exact for convex polygons).
+    Returns (value, d/d v_P (12,), d/d v_Q (12,)).
+    """
+    cp, cq = corners(P, pinfo), corners(Q, qinfo)
+    best = None
+    for owner, col in ((0, 3), (0, 6), (1, 3), (1, 6)):
+        pose = P if owner == 0 else Q
+        u = pose.v[col:col + 2]
+        for sign in (1.0, -1.0):
+            n = sign * u
+            pa = [n @ c for c, _ in cp]
+            qb = [n @ c for c, _ in cq]
+            ia, ib = int(np.argmax(pa)), int(np.argmin(qb))
+            val = qb[ib] - pa[ia]
+            if best is None or val > best[0]:
+                best = (val, owner, col, sign, n, ia, ib)
+    val, owner, col, sign, n, ia, ib = best
+    (a_xy, a_j), (b_xy, b_j) = cp[ia], cq[ib]
+    gp, gq = -n @ a_j, n @ b_j
+    dn = np.zeros(12)
+    dn_xy = sign * (b_xy - a_xy)
+    dn[col:col + 2] = dn_xy
+    if owner == 0:
+        gp = gp + dn
+    else:
+        gq = gq + dn
+    return float(val), gp, gq
+
+
+def _rect_point(R: PoseX, rinfo: BodyInfo, c: np.ndarray):
+    """Signed distance of point c (xy) from a rectangle or disk footprint, and its
+    gradients w.r.t. v_R (12,) and c (2,)."""
+    d = c - R.pos[:2]
+    ex, ey = R.ax[:2], R.ay[:2]
+    local = np.array([ex @ d, ey @ d])
+    half = np.asarray(rinfo.half[:2])
+    if rinfo.disk:
         n = float(np.linalg.norm(local))
-        sd, grad_local = n - half[0], (local / n if n > 1e-12 else np.array([1.0, 0.0]))
+        sd, gl = n - half[0], (local / n if n > 1e-12 else np.array([1.0, 0.0]))
     else:
         q = np.abs(local) - half
-        sign = np.sign(local) + (local == 0)
+        sgn = np.sign(local) + (local == 0)
         if np.all(q <= 0):
             i = int(np.argmax(q))
-            sd = float(q[i])
-            grad_local = np.zeros(2)
-            grad_local[i] = sign[i]
+            sd, gl = float(q[i]), np.zeros(2)
+            gl[i] = sgn[i]
         else:
-            outside = np.maximum(q, 0.0)
-            sd = float(np.linalg.norm(outside))
-            grad_local = outside / sd * sign
-    grad_world = np.array([c * grad_local[0] - s * grad_local[1],
-                           s * grad_local[0] + c * grad_local[1]])
-    g = _g(1)
-    g[0, 0:2] = grad_world
-    rows.add(np.array([sd - rp]), P.through(g), Label(step, f"overlaps {rect.name}"))
+            out = np.maximum(q, 0.0)
+            sd = float(np.linalg.norm(out))
+            gl = out / sd * sgn
+    gc = gl[0] * ex + gl[1] * ey
+    gr = np.zeros(12)
+    gr[0:2] = -gc
+    gr[3:5] = gl[0] * d
+    gr[6:8] = gl[1] * d
+    return float(sd), gr, gc
+
+
+def apart(rows: RowSet, step: str, P: PoseX, pinfo: BodyInfo, Q: PoseX, qinfo: BodyInfo,
+          other: str, gap: float = GAP) -> None:
+    """Footprints apart by `gap`, exactly: disks by their centres, a disk and a box by
+    the centre's distance from the box, two boxes by the separating axis theorem."""
+    gp, gq = np.zeros((1, 12)), np.zeros((1, 12))
+    if pinfo.disk and qinfo.disk:
+        d = P.pos[:2] - Q.pos[:2]
+        n = float(np.linalg.norm(d))
+        u = d / n if n > 1e-12 else np.array([1.0, 0.0])
+        val = n - pinfo.half[0] - qinfo.half[0]
+        gp[0, 0:2], gq[0, 0:2] = u, -u
+    elif pinfo.disk or qinfo.disk:
+        (D, dinfo, gd), (R, rinfo, gr) = ((P, pinfo, gp), (Q, qinfo, gq)) if pinfo.disk \
+            else ((Q, qinfo, gq), (P, pinfo, gp))
+        sd, g_r, g_c = _rect_point(R, rinfo, D.pos[:2])
+        val = sd - dinfo.half[0]
+        gr[0] = g_r
+        gd[0, 0:2] = g_c
+    else:
+        val, gp[0], gq[0] = _sat(P, pinfo, Q, qinfo)
+    rows.add(np.array([val - gap]), _pair_jac(P, gp, Q, gq), Label(step, f"overlaps {other}"))
 
 
 def within_reach(rows: RowSet, step: str, P: PoseX, centre, reach: float) -> None:
