@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from tampcli.optimize.bodies import BodyInfo
+from tampcli.optimize.bodies import REST_TOLERANCE, BodyInfo
 from tampcli.optimize.constraints import corners
 from tampcli.optimize.expr import Jac, Label, PoseX, RowSet, add_jac
 
@@ -107,3 +107,77 @@ def align_cost(P: PoseX, info: BodyInfo, S: PoseX, sinfo: BodyInfo) -> tuple[flo
     grad = add_jac({k: ALIGN_WEIGHT * gp @ j for k, j in P.jac.items()},
                    {k: ALIGN_WEIGHT * gs @ j for k, j in S.jac.items()})
     return ALIGN_WEIGHT * cost, grad
+
+
+# ---------------------------------------------------------------- verify
+
+INSIDE = 1e-3  # m: what verify forgives of a footprint off its face or a centre of mass
+
+
+def _face_excess(xy, rad: float, S: np.ndarray, sinfo: BodyInfo, inset) -> float:
+    """How far (m) a disk of radius `rad` at xy reaches beyond S's top face shrunk by inset."""
+    local = S[:3, :3].T @ np.array([xy[0] - S[0, 3], xy[1] - S[1, 3], 0.0])
+    if sinfo.disk:
+        return float(np.linalg.norm(local[:2]) + rad - (sinfo.half[0] - inset[0]))
+    return float(max(abs(local[k]) + rad - (sinfo.half[k] - inset[k]) for k in (0, 1)))
+
+
+def _rests_on(name: str, poses: dict, bodies: dict) -> str | None:
+    """The body whose top face carries `name` (bottom on it, centre over it)."""
+    info, P = bodies[name], poses[name]
+    for other, oinfo in bodies.items():
+        if other == name:
+            continue
+        S = poses[other]
+        if abs(S[2, 3] + oinfo.half[2] - (P[2, 3] - info.half[2])) <= REST_TOLERANCE and \
+                _face_excess(P[:2, 3], 0.0, S, oinfo, (0.0, 0.0)) <= 0.0:
+            return other
+    return None
+
+
+def unstable(problem, step, poses: dict) -> list[str]:
+    """What `verify` refuses of a placement: a footprint off the top face of the body it
+    is stacked on, a load whose centre of mass leaves the inset face (module docstring).
+    `poses`: name -> 4x4 world pose of every body once the step is done."""
+    bodies = problem.bodies
+    out = []
+    regions = {r.name for r in problem.scene.regions}
+    P, info = poses[step.obj], bodies[step.obj]
+    if step.target is not None and step.target not in regions:
+        S, sinfo = poses[step.target], bodies[step.target]
+        pts = [(P[:2, 3], info.half[0])] if info.disk else [
+            ((P[:3, :3] @ np.array([a * info.half[0], b * info.half[1], 0.0]) + P[:3, 3])[:2], 0.0)
+            for a in (-1, 1) for b in (-1, 1)]
+        over = max(_face_excess(xy, rad, S, sinfo, (0.0, 0.0)) for xy, rad in pts)
+        if over > INSIDE:
+            out.append(f"{step.name}: {step.obj}'s footprint sticks out of the top of "
+                       f"{step.target} by {100 * over:.1f} cm")
+    movable = [n for n, i in bodies.items() if not i.fixed]
+    supports = {n: _rests_on(n, poses, bodies) for n in movable}
+    supports[step.obj] = step.support
+    base, support, seen = step.obj, step.support, set()
+    while support is not None and base not in seen:
+        seen.add(base)
+        load = _load(base, movable, supports)
+        total = sum(bodies[n].mass for n in load)
+        com = sum(bodies[n].mass * poses[n][:2, 3] for n in load) / total
+        inset = margin(bodies[base], bodies[support])
+        over = _face_excess(com, 0.0, poses[support], bodies[support], inset)
+        if over > INSIDE:
+            out.append(f"{step.name}: the centre of mass of {', '.join(sorted(load))} is "
+                       f"{100 * over:.1f} cm beyond the stable part of {support}'s top face "
+                       f"(inset {100 * min(inset):.1f} cm)")
+        if bodies[support].fixed:
+            break
+        base, support = support, supports.get(support)
+    return out
+
+
+def _load(name: str, movable, supports: dict) -> list[str]:
+    out, frontier = [name], [name]
+    while frontier:
+        below = frontier.pop()
+        above = [o for o in movable if supports.get(o) == below and o not in out]
+        out += above
+        frontier += above
+    return out

@@ -15,6 +15,7 @@ from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import LoweringError, Step
+from tampcli.optimize.stability import unstable
 
 
 class Place(ModeKind):
@@ -99,4 +100,6 @@ class Place(ModeKind):
         walk.instant(step)
 
     def check(self, walk, step):
-        return walk.rest(step)
+        poses = {n: walk.after(n) if n in walk.poses else pose_matrix(*i.pose)
+                 for n, i in walk.problem.bodies.items()}
+        return walk.rest(step) + unstable(walk.problem, step, poses)
