@@ -11,7 +11,6 @@ import numpy as np
 from tampcli.optimize.bodies import BodyInfo
 from tampcli.optimize.expr import Label, PoseX, RowSet
 
-STACK_INSET = 0.5  # a stacked object's centre stays within this fraction of the support's half size
 DOWN = 0.9  # cos of the largest tilt of an upright held object at grasp/push keyframes
 
 
@@ -44,39 +43,6 @@ def inside_region(rows: RowSet, step: str, P: PoseX, info: BodyInfo, region) -> 
                         row += 1
         vals = np.array(vals)
     rows.add(vals, P.through(g), Label(step, f"footprint outside region {region.name}"))
-
-
-def on_top_of(rows: RowSet, step: str, P: PoseX, S: PoseX, sinfo: BodyInfo) -> None:
-    """The centre over the support's top face, inset (stacking)."""
-    d = P.pos[:2] - S.pos[:2]
-    label = Label(step, f"centre off the top of {sinfo.name}")
-    if sinfo.disk:
-        lim = STACK_INSET * sinfo.half[0]
-        g = _g(1)
-        g[0, 0:2] = -2 * d
-        gs = _g(1)
-        gs[0, 0:2] = 2 * d
-        jac = P.through(g)
-        for k, v in S.through(gs).items():
-            jac[k] = jac[k] + v if k in jac else v
-        rows.add(np.array([lim**2 - d @ d]), jac, label)
-        return
-    vals, gp, gs = [], _g(4), _g(4)
-    row = 0
-    for axis, col in ((0, 3), (1, 6)):
-        e = S.v[col:col + 2]
-        u = e @ d
-        lim = STACK_INSET * sinfo.half[axis]
-        for sign in (1.0, -1.0):
-            vals.append(lim - sign * u)
-            gp[row, 0:2] = -sign * e
-            gs[row, 0:2] = sign * e
-            gs[row, col:col + 2] = -sign * d
-            row += 1
-    jac = P.through(gp)
-    for k, v in S.through(gs).items():
-        jac[k] = jac[k] + v if k in jac else v
-    rows.add(np.array(vals), jac, label)
 
 
 def rest_height(rows: RowSet, step: str, P: PoseX, z: float, support: str) -> None:
@@ -136,7 +102,9 @@ def _sat(P: PoseX, pinfo: BodyInfo, Q: PoseX, qinfo: BodyInfo):
     for owner, col in ((0, 3), (0, 6), (1, 3), (1, 6)):
         pose = P if owner == 0 else Q
         u = pose.v[col:col + 2]
-        for sign in (1.0, -1.0):
+        # On a tie (coincident footprints, as at the centred start) P moves along +x,
+        # the way the centre-distance rows it replaced pushed it.
+        for sign in (-1.0, 1.0):
             n = sign * u
             pa = [n @ c for c, _ in cp]
             qb = [n @ c for c, _ in cq]

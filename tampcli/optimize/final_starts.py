@@ -5,11 +5,13 @@ placement still moves when a later one needs its room; what the starting
 point decides is which local optimum SLSQP finds. Measured on the robust
 packing problems (several objects into one region, under 15 % slack): from
 every object at the region's middle the NLP ended with two of them
-overlapping for every order. So the first start lays the placements into a
-region out in a row along its long side, the first placed at the end
-farthest from the robot (a later one need not pass it), their gaps equal;
-the second puts each where it is clearest of what rests there by then; the
-third is the region's middle. Each start is a function of the skeleton
+overlapping for every order. The first start is the region's middle (with
+room to spare the NLP pushes the objects apart from there, and the keyframe
+stage, whose grasp sides follow the robot's approach, was tuned on such
+placements); when it fails, the second lays the placements into a region
+out in a row along its long side, the first placed at the end farthest from
+the robot (a later one need not pass it), their gaps equal; the third puts
+each where it is clearest of what rests there by then. Each start is a function of the skeleton
 alone: never of a neighbouring skeleton's result, so a skeleton's outcome
 does not depend on what was evaluated before it or on what follows it.
 """
@@ -120,4 +122,4 @@ def centred(problem) -> tuple[dict, dict]:
     return _walk(problem, lambda step, where, yaw, region: region.center)
 
 
-STARTS = (packed, clearest, centred)
+STARTS = (centred, packed, clearest)
