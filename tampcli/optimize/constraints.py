@@ -212,6 +212,15 @@ def same_pose(rows: RowSet, ineq: RowSet, step: str, H: PoseX, target: PoseX, pl
         rows.add(np.array([val]), jac, Label(step, "gripper not aligned with the faces", "rad"))
 
 
+def same_yaw(rows: RowSet, step: str, P: PoseX, Q: PoseX) -> None:
+    """P turned as Q: sin(yaw_P - yaw_Q) = 0 (both upright; starts on the right branch)."""
+    val = Q.ax[0] * P.ax[1] - Q.ax[1] * P.ax[0]
+    gp, gq = _g(1), _g(1)
+    gp[0, 3], gp[0, 4] = -Q.ax[1], Q.ax[0]
+    gq[0, 3], gq[0, 4] = P.ax[1], -P.ax[0]
+    rows.add(np.array([val]), _pair_jac(P, gp, Q, gq), Label(step, "turned", "rad"))
+
+
 def point_in_rect(rows: RowSet, step: str, P: PoseX, lo, hi, what: str) -> None:
     vals = np.array([P.pos[0] - lo[0], hi[0] - P.pos[0], P.pos[1] - lo[1], hi[1] - P.pos[1]])
     g = _g(4)

@@ -5,13 +5,13 @@ placement still moves when a later one needs its room; what the starting
 point decides is which local optimum SLSQP finds. Measured on the robust
 packing problems (several objects into one region, under 15 % slack): from
 every object at the region's middle the NLP ended with two of them
-overlapping for every order. The first start is the region's middle (with
-room to spare the NLP pushes the objects apart from there, and the keyframe
-stage, whose grasp sides follow the robot's approach, was tuned on such
-placements); when it fails, the second lays the placements into a region
-out in a row along its long side, the first placed at the end farthest from
-the robot (a later one need not pass it), their gaps equal; the third puts
-each where it is clearest of what rests there by then. Each start is a function of the skeleton
+overlapping for every order. Three starts, tried in turn until one solves:
+the region's middle (with room to spare the NLP pushes the objects apart
+from there; the keyframe stage, whose grasp sides follow the robot's
+approach, was tuned on such placements); a row along the region's long
+side, the first placed at the end farthest from the robot (a later one need
+not pass it), equal gaps (first when a region is tight: see `starts`); each
+placement where it is clearest of what rests there by then. Each start is a function of the skeleton
 alone: never of a neighbouring skeleton's result, so a skeleton's outcome
 does not depend on what was evaluated before it or on what follows it.
 """
@@ -122,4 +122,26 @@ def centred(problem) -> tuple[dict, dict]:
     return _walk(problem, lambda step, where, yaw, region: region.center)
 
 
-STARTS = (centred, packed, clearest)
+TIGHT = 0.3  # a region whose row of placements leaves less of its length free is packed
+
+
+def _tight(problem) -> bool:
+    """Does some region receive several placements with under TIGHT of its long side
+    to spare (at the objects' start yaws)?"""
+    for name, region in _regions(problem).items():
+        steps = [s for s in _placing(problem) if s.target == name]
+        if len(steps) < 2:
+            continue
+        axis = int(np.argmax(region.size))
+        used = sum(_extent(problem.bodies[s.obj], problem.bodies[s.obj].pose[3], axis)
+                   for s in steps)
+        if used > (1.0 - TIGHT) * region.size[axis]:
+            return True
+    return False
+
+
+def starts(problem) -> tuple:
+    """The starts to try in order: the packed row first when a region is tight."""
+    if _tight(problem):
+        return (packed, centred, clearest)
+    return (centred, packed, clearest)

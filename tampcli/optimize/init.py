@@ -23,9 +23,9 @@ from tampcli.optimize.world_state import grip_of
 
 def final_guess(problem: TrajectoryProblem, warm=None):
     """(placements, origins): a values.Placement per placing step (by step index),
-    and the (x, y) point each is pulled towards: the first of final_starts.STARTS,
+    and the (x, y) point each is pulled towards: the first of final_starts.starts,
     or `warm` (step index -> values.Placement) where it has the step."""
-    placements, origins = final_starts.STARTS[0](problem)
+    placements, origins = final_starts.starts(problem)[0](problem)
     if warm:
         placements = {i: warm.get(i, p) for i, p in placements.items()}
     return placements, origins

@@ -17,7 +17,7 @@ import numpy as np
 
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
-from tampcli.optimize.final_starts import STARTS
+from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import Kinematics
 from tampcli.optimize.init import keyframe_guess
 from tampcli.optimize.layout import keyframe_block
@@ -131,7 +131,7 @@ def _beyond_reach(problem) -> str | None:
 
 
 def _placements(run: _Run):
-    """Run the final NLP from each of final_starts.STARTS until one solves; returns
+    """Run the final NLP from each of final_starts.starts until one solves; returns
     (outcome or None when there is nothing to place, values). Its outcome depends on
     the skeleton alone (no warm start from another skeleton: see final_starts)."""
     problem = run.problem
@@ -140,7 +140,7 @@ def _placements(run: _Run):
         return None, {}
     bounds = [(-1e3, 1e3)] * layout.size
     best = None
-    for start in STARTS:
+    for start in starts(problem):
         placements, origins = start(problem)
         out = run.nlp(lambda x, origins=origins: final_rows(problem, layout.unpack(x), origins),
                       layout, layout.pack(placement_blocks(placements)), bounds)

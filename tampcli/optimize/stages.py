@@ -124,6 +124,7 @@ class FinalWalk:
         self.origins = origins
         self.rows = Rows()
         self.state, self.heights, self.supports = _start_state(problem)
+        self.last = dict(self.state)  # where each object last rested (it keeps that yaw held)
         self.centre, self.reach = reach_of(problem)
 
     def place(self, step) -> None:
@@ -139,6 +140,10 @@ class FinalWalk:
                         self.supports)
         if np.isfinite(self.reach):
             C.within_reach(self.rows.ineq, step.name, P, self.centre, self.reach)
+        if self.problem.planar:
+            # The planar robot does not turn what it carries or pushes.
+            C.same_yaw(self.rows.eq, step.name, P, self.last[step.obj])
+        self.last[step.obj] = P
         if stacked:
             cost, grad = S.align_cost(P, self.problem.bodies[step.obj], support,
                                       self.problem.bodies[step.support])

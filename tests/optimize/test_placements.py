@@ -344,3 +344,29 @@ def test_verify_refuses_a_centre_of_mass_beyond_the_margin():
     after.update(a=pose_matrix(c.pose[0] + shift, c.pose[1], problem.steps[3].rest_z, 0.0),
                  b=b_pose)
     assert step.kind.check(_After(problem, after).walk, step) == []
+
+
+def test_same_yaw_row_matches_finite_differences():
+    x = np.array([0.01, -0.02, 0.4, 0.03, 0.05, -1.1])
+    val = _rows_check(lambda rows, P, Q: C.same_yaw(rows, "s", P, Q), x)
+    assert val[0] == pytest.approx(math.sin(0.4 + 1.1))
+
+
+def test_planar_bay_packing_keeps_yaws_and_reaches_its_keyframes():
+    """robust-planar p06: the planar robot does not turn what it carries, so the final
+    placements keep each block's yaw; the disk stays on the mouth's side of each block
+    it puts in (before: the keyframes failed with the disk between two blocks, 'collision
+    planar_body vs a by 5.0 cm')."""
+    domain, scene, modes = _problem_files("robust-planar", "p06")
+    with World(scene) as world:
+        problem = lower(ops("(pick a table)", "(place a bay)", "(pick b table)",
+                            "(place b bay)", "(pick c table)", "(place c bay)"),
+                        scene, modes, world, domain=domain)
+        final = solve(problem, "final")
+        assert final.solved
+        for i, p in final.placements.items():
+            assert p.yaw == pytest.approx(problem.bodies[problem.steps[i].obj].pose[3], abs=1e-6)
+        xs = [final.placements[i].x for i in (1, 3, 5)]
+        assert xs == sorted(xs, reverse=True)  # the first placed at the far end
+        keyframes = solve(problem, "keyframes", final)
+        assert keyframes.solved, keyframes.worst_constraint
