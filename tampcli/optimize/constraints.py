@@ -90,6 +90,15 @@ def _pair_jac(P: PoseX, gp: np.ndarray, Q: PoseX, gq: np.ndarray):
     return jac
 
 
+_SIGNS = np.array([(a, b) for a in (-1.0, 1.0) for b in (-1.0, 1.0)])  # corner order
+
+
+def _corner_array(P: PoseX, info: BodyInfo) -> np.ndarray:
+    hx, hy = info.half[0], info.half[1]
+    return (P.pos[:2] + np.outer(_SIGNS[:, 0] * hx, P.ax[:2])
+            + np.outer(_SIGNS[:, 1] * hy, P.ay[:2]))
+
+
 def _sat(P: PoseX, pinfo: BodyInfo, Q: PoseX, qinfo: BodyInfo):
     """Separation of two box footprints: the largest gap along an edge normal of either.
 
@@ -97,32 +106,29 @@ def _sat(P: PoseX, pinfo: BodyInfo, Q: PoseX, qinfo: BodyInfo):
     penetration depth (separating axis theorem, exact for convex polygons).
     Returns (value, d/d v_P (12,), d/d v_Q (12,)).
     """
-    cp, cq = corners(P, pinfo), corners(Q, qinfo)
-    best = None
-    for owner, col in ((0, 3), (0, 6), (1, 3), (1, 6)):
-        pose = P if owner == 0 else Q
-        u = pose.v[col:col + 2]
-        # On a tie (coincident footprints, as at the centred start) P moves along +x,
-        # the way the centre-distance rows it replaced pushed it.
-        for sign in (-1.0, 1.0):
-            n = sign * u
-            pa = [n @ c for c, _ in cp]
-            qb = [n @ c for c, _ in cq]
-            ia, ib = int(np.argmax(pa)), int(np.argmin(qb))
-            val = qb[ib] - pa[ia]
-            if best is None or val > best[0]:
-                best = (val, owner, col, sign, n, ia, ib)
-    val, owner, col, sign, n, ia, ib = best
-    (a_xy, a_j), (b_xy, b_j) = cp[ia], cq[ib]
+    cp, cq = _corner_array(P, pinfo), _corner_array(Q, qinfo)
+    axes = np.array([P.ax[:2], P.ay[:2], Q.ax[:2], Q.ay[:2]])
+    pp, pq = cp @ axes.T, cq @ axes.T  # (corner, axis)
+    # Along -u first: on a tie (coincident footprints, as at the centred start) P
+    # moves along +x, the way the centre-distance rows it replaced pushed it.
+    vals = np.concatenate([pp.min(axis=0) - pq.max(axis=0), pq.min(axis=0) - pp.max(axis=0)])
+    best = int(np.argmax(vals))
+    sign = -1.0 if best < 4 else 1.0
+    i = best % 4
+    n = sign * axes[i]
+    ia = int(np.argmax(cp @ n))
+    ib = int(np.argmin(cq @ n))
+    a_j = corner_jac(*_SIGNS[ia], pinfo.half[0], pinfo.half[1])
+    b_j = corner_jac(*_SIGNS[ib], qinfo.half[0], qinfo.half[1])
     gp, gq = -n @ a_j, n @ b_j
+    col = 3 if i % 2 == 0 else 6
     dn = np.zeros(12)
-    dn_xy = sign * (b_xy - a_xy)
-    dn[col:col + 2] = dn_xy
-    if owner == 0:
+    dn[col:col + 2] = sign * (cq[ib] - cp[ia])
+    if i < 2:
         gp = gp + dn
     else:
         gq = gq + dn
-    return float(val), gp, gq
+    return float(vals[best]), gp, gq
 
 
 def _rect_point(R: PoseX, rinfo: BodyInfo, c: np.ndarray):
