@@ -109,10 +109,22 @@ def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: d
         if oinfo.fixed and other != step.support and vertical_overlap(
                 z, info.half[2], oinfo.pose[2], oinfo.half[2]):
             C.apart(rows.ineq, name, P, info, constant_pose(*oinfo.pose), oinfo, other)
+    if _stacked(problem, step):
+        # Part of both NLPs' objective (docs/formats.md, "Stacking and stability").
+        cost, grad = S.align_cost(P, info, _pose_of(problem, step.support, state),
+                                  problem.bodies[step.support])
+        rows.cost += cost
+        for k, g in grad.items():
+            rows.cost_grad[k] = rows.cost_grad.get(k, 0.0) + g
     state[step.obj] = P
     heights[step.obj] = z
     supports[step.obj] = step.support
     _stability_rows(rows, problem, step, state, supports)
+
+
+def _stacked(problem, step) -> bool:
+    """Placed on a body rather than into a region."""
+    return step.target is not None and step.target not in {r.name for r in problem.scene.regions}
 
 
 class FinalWalk:
@@ -133,9 +145,7 @@ class FinalWalk:
         block = placement_block(step.index)
         x, y, yaw = self.vals[block]
         P = planar_pose(block, x, y, step.rest_z, yaw)
-        regions = {r.name for r in self.problem.scene.regions}
-        stacked = step.target is not None and step.target not in regions
-        support = _pose_of(self.problem, step.support, self.state) if stacked else None
+        stacked = _stacked(self.problem, step)
         _placement_rows(self.rows, self.problem, step, P, self.state, self.heights,
                         self.supports)
         if np.isfinite(self.reach):
@@ -144,16 +154,10 @@ class FinalWalk:
             # The planar robot does not turn what it carries or pushes.
             C.same_yaw(self.rows.eq, step.name, P, self.last[step.obj])
         self.last[step.obj] = P
-        if stacked:
-            cost, grad = S.align_cost(P, self.problem.bodies[step.obj], support,
-                                      self.problem.bodies[step.support])
-        else:
+        if not stacked:
             d = np.array([x, y]) - self.origins[step.index]
-            cost, grad = PULL * float(d @ d), {block: np.array([2 * PULL * d[0],
-                                                                2 * PULL * d[1], 0.0])}
-        self.rows.cost += cost
-        for k, g in grad.items():
-            self.rows.cost_grad[k] = self.rows.cost_grad.get(k, 0.0) + g
+            self.rows.cost += PULL * float(d @ d)
+            self.rows.cost_grad[block] = np.array([2 * PULL * d[0], 2 * PULL * d[1], 0.0])
 
 
 def final_rows(problem: TrajectoryProblem, vals: dict, origins: dict) -> Rows:
