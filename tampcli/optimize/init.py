@@ -21,14 +21,11 @@ from tampcli.optimize.values import GripChoice, Keyframes
 from tampcli.optimize.world_state import grip_of
 
 
-def final_guess(problem: TrajectoryProblem, warm=None):
-    """(placements, origins): a values.Placement per placing step (by step index),
-    and the (x, y) point each is pulled towards: the first of final_starts.starts,
-    or `warm` (step index -> values.Placement) where it has the step."""
-    placements, origins = final_starts.starts(problem)[0](problem)
-    if warm:
-        placements = {i: warm.get(i, p) for i, p in placements.items()}
-    return placements, origins
+def final_guess(problem: TrajectoryProblem):
+    """(placements, origins) of the final NLP's first start (final_starts.starts):
+    a values.Placement per placing step (by step index), and the (x, y) point each
+    is pulled towards."""
+    return final_starts.starts(problem)[0](problem)
 
 
 class GuessWalk:
