@@ -18,6 +18,8 @@ from tampcli.geometry import transforms
 REST_TOLERANCE = 0.005
 # How far apart `verify` still calls a tool and the object it grasps or pushes touching (m).
 TOUCH_TOLERANCE = 2e-3
+# kg/m^3: a body without a `mass` in the scene weighs its volume times this (stability.py)
+DENSITY = 1000.0
 
 
 @dataclass(frozen=True)
@@ -28,6 +30,7 @@ class BodyInfo:
     fixed: bool
     pose: tuple[float, float, float, float]  # start (x, y, z, yaw)
     upright: bool  # the start pose has its z axis vertical
+    mass: float = 1.0  # kg: the scene's `mass`, else DENSITY x volume
 
     @property
     def disk(self) -> bool:
@@ -61,10 +64,11 @@ def body_info(body, world=None) -> BodyInfo:
         half = (body.size[0],) * 3
     else:
         lo, hi = _aabb(world, body.name)
-        half = tuple(0.5 * (hi - lo))
+        half = tuple(float(h) for h in 0.5 * (hi - lo))
         centre = 0.5 * (hi + lo)
         return BodyInfo(body.name, "box", half, body.fixed,
-                        (float(centre[0]), float(centre[1]), float(centre[2]), 0.0), True)
+                        (float(centre[0]), float(centre[1]), float(centre[2]), 0.0), True,
+                        _mass(body, "box", half))
     if not upright:
         # A tilted body: treat it by its world AABB (only obstacles are tilted sensibly).
         corners = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)])
@@ -72,8 +76,24 @@ def body_info(body, world=None) -> BodyInfo:
         half = tuple(np.max(np.abs(world_pts), axis=0))
         yaw = 0.0
     p = m[:3, 3]
-    return BodyInfo(body.name, body.shape, tuple(float(h) for h in half), body.fixed,
-                    (float(p[0]), float(p[1]), float(p[2]), float(yaw)), upright)
+    half = tuple(float(h) for h in half)
+    return BodyInfo(body.name, body.shape, half, body.fixed,
+                    (float(p[0]), float(p[1]), float(p[2]), float(yaw)), upright,
+                    _mass(body, body.shape, half))
+
+
+def _mass(body, shape: str, half) -> float:
+    """The scene's mass when it gives one (a Body may carry `mass`), else uniform density."""
+    given = getattr(body, "mass", None)
+    if given is not None:
+        return float(given)
+    if shape == "cylinder":
+        volume = math.pi * half[0] ** 2 * 2 * half[2]
+    elif shape == "sphere":
+        volume = 4.0 / 3.0 * math.pi * half[0] ** 3
+    else:
+        volume = 8 * half[0] * half[1] * half[2]
+    return DENSITY * volume
 
 
 def _aabb(world, name):

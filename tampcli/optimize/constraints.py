@@ -11,7 +11,6 @@ import numpy as np
 from tampcli.optimize.bodies import BodyInfo
 from tampcli.optimize.expr import Label, PoseX, RowSet
 
-STACK_INSET = 0.5  # a stacked object's centre stays within this fraction of the support's half size
 DOWN = 0.9  # cos of the largest tilt of an upright held object at grasp/push keyframes
 
 
@@ -46,39 +45,6 @@ def inside_region(rows: RowSet, step: str, P: PoseX, info: BodyInfo, region) -> 
     rows.add(vals, P.through(g), Label(step, f"footprint outside region {region.name}"))
 
 
-def on_top_of(rows: RowSet, step: str, P: PoseX, S: PoseX, sinfo: BodyInfo) -> None:
-    """The centre over the support's top face, inset (stacking)."""
-    d = P.pos[:2] - S.pos[:2]
-    label = Label(step, f"centre off the top of {sinfo.name}")
-    if sinfo.disk:
-        lim = STACK_INSET * sinfo.half[0]
-        g = _g(1)
-        g[0, 0:2] = -2 * d
-        gs = _g(1)
-        gs[0, 0:2] = 2 * d
-        jac = P.through(g)
-        for k, v in S.through(gs).items():
-            jac[k] = jac[k] + v if k in jac else v
-        rows.add(np.array([lim**2 - d @ d]), jac, label)
-        return
-    vals, gp, gs = [], _g(4), _g(4)
-    row = 0
-    for axis, col in ((0, 3), (1, 6)):
-        e = S.v[col:col + 2]
-        u = e @ d
-        lim = STACK_INSET * sinfo.half[axis]
-        for sign in (1.0, -1.0):
-            vals.append(lim - sign * u)
-            gp[row, 0:2] = -sign * e
-            gs[row, 0:2] = sign * e
-            gs[row, col:col + 2] = -sign * d
-            row += 1
-    jac = P.through(gp)
-    for k, v in S.through(gs).items():
-        jac[k] = jac[k] + v if k in jac else v
-    rows.add(np.array(vals), jac, label)
-
-
 def rest_height(rows: RowSet, step: str, P: PoseX, z: float, support: str) -> None:
     g = _g(1)
     g[0, 2] = 1.0
@@ -98,47 +64,123 @@ def stays_up(rows: RowSet, step: str, P: PoseX) -> None:
     rows.add(np.array([P.az[2] - DOWN]), P.through(g), Label(step, "upside down", ""))
 
 
-def apart_disks(rows: RowSet, step: str, P: PoseX, rp: float, Q: PoseX, rq: float,
-                other: str) -> None:
-    """Footprint circles apart: |P - Q|_xy >= rp + rq (conservative for boxes)."""
-    d = P.pos[:2] - Q.pos[:2]
-    n = float(np.linalg.norm(d))
-    u = d / n if n > 1e-12 else np.array([1.0, 0.0])
-    gp, gq = _g(1), _g(1)
-    gp[0, 0:2] = u
-    gq[0, 0:2] = -u
+GAP = 1e-3  # m: footprints of two resting objects kept this far apart (touching is allowed)
+
+
+def corner_jac(a: float, b: float, hx: float, hy: float) -> np.ndarray:
+    """d corner / d v (2, 12) of the footprint corner pos + a hx ax + b hy ay."""
+    g = np.zeros((2, 12))
+    g[0, 0] = g[1, 1] = 1.0
+    g[0, 3] = g[1, 4] = a * hx
+    g[0, 6] = g[1, 7] = b * hy
+    return g
+
+
+def corners(P: PoseX, info: BodyInfo) -> list[tuple[np.ndarray, np.ndarray]]:
+    """The footprint corners of a box: (xy, d xy / d v)."""
+    hx, hy = info.half[0], info.half[1]
+    return [(P.pos[:2] + a * hx * P.ax[:2] + b * hy * P.ay[:2], corner_jac(a, b, hx, hy))
+            for a in (-1.0, 1.0) for b in (-1.0, 1.0)]
+
+
+def _pair_jac(P: PoseX, gp: np.ndarray, Q: PoseX, gq: np.ndarray):
     jac = P.through(gp)
     for k, v in Q.through(gq).items():
         jac[k] = jac[k] + v if k in jac else v
-    rows.add(np.array([n - rp - rq]), jac, Label(step, f"overlaps {other}"))
+    return jac
 
 
-def apart_rect(rows: RowSet, step: str, P: PoseX, rp: float, rect: BodyInfo) -> None:
-    """Footprint circle outside a fixed rectangle (signed distance from its centre)."""
-    c, s = np.cos(rect.pose[3]), np.sin(rect.pose[3])
-    d = P.pos[:2] - np.asarray(rect.pose[:2])
-    local = np.array([c * d[0] + s * d[1], -s * d[0] + c * d[1]])
-    half = np.asarray(rect.half[:2])
-    if rect.disk:
+_SIGNS = np.array([(a, b) for a in (-1.0, 1.0) for b in (-1.0, 1.0)])  # corner order
+
+
+def _corner_array(P: PoseX, info: BodyInfo) -> np.ndarray:
+    hx, hy = info.half[0], info.half[1]
+    return (P.pos[:2] + np.outer(_SIGNS[:, 0] * hx, P.ax[:2])
+            + np.outer(_SIGNS[:, 1] * hy, P.ay[:2]))
+
+
+def _sat(P: PoseX, pinfo: BodyInfo, Q: PoseX, qinfo: BodyInfo):
+    """Separation of two box footprints: the largest gap along an edge normal of either.
+
+    Positive: apart by at least that much along that axis; negative: minus the
+    penetration depth (separating axis theorem, exact for convex polygons).
+    Returns (value, d/d v_P (12,), d/d v_Q (12,)).
+    """
+    cp, cq = _corner_array(P, pinfo), _corner_array(Q, qinfo)
+    axes = np.array([P.ax[:2], P.ay[:2], Q.ax[:2], Q.ay[:2]])
+    pp, pq = cp @ axes.T, cq @ axes.T  # (corner, axis)
+    # Along -u first: on a tie (coincident footprints, as at the centred start) P
+    # moves along +x, the way the centre-distance rows it replaced pushed it.
+    vals = np.concatenate([pp.min(axis=0) - pq.max(axis=0), pq.min(axis=0) - pp.max(axis=0)])
+    best = int(np.argmax(vals))
+    sign = -1.0 if best < 4 else 1.0
+    i = best % 4
+    n = sign * axes[i]
+    ia = int(np.argmax(cp @ n))
+    ib = int(np.argmin(cq @ n))
+    a_j = corner_jac(*_SIGNS[ia], pinfo.half[0], pinfo.half[1])
+    b_j = corner_jac(*_SIGNS[ib], qinfo.half[0], qinfo.half[1])
+    gp, gq = -n @ a_j, n @ b_j
+    col = 3 if i % 2 == 0 else 6
+    dn = np.zeros(12)
+    dn[col:col + 2] = sign * (cq[ib] - cp[ia])
+    if i < 2:
+        gp = gp + dn
+    else:
+        gq = gq + dn
+    return float(vals[best]), gp, gq
+
+
+def _rect_point(R: PoseX, rinfo: BodyInfo, c: np.ndarray):
+    """Signed distance of point c (xy) from a rectangle or disk footprint, and its
+    gradients w.r.t. v_R (12,) and c (2,)."""
+    d = c - R.pos[:2]
+    ex, ey = R.ax[:2], R.ay[:2]
+    local = np.array([ex @ d, ey @ d])
+    half = np.asarray(rinfo.half[:2])
+    if rinfo.disk:
         n = float(np.linalg.norm(local))
-        sd, grad_local = n - half[0], (local / n if n > 1e-12 else np.array([1.0, 0.0]))
+        sd, gl = n - half[0], (local / n if n > 1e-12 else np.array([1.0, 0.0]))
     else:
         q = np.abs(local) - half
-        sign = np.sign(local) + (local == 0)
+        sgn = np.sign(local) + (local == 0)
         if np.all(q <= 0):
             i = int(np.argmax(q))
-            sd = float(q[i])
-            grad_local = np.zeros(2)
-            grad_local[i] = sign[i]
+            sd, gl = float(q[i]), np.zeros(2)
+            gl[i] = sgn[i]
         else:
-            outside = np.maximum(q, 0.0)
-            sd = float(np.linalg.norm(outside))
-            grad_local = outside / sd * sign
-    grad_world = np.array([c * grad_local[0] - s * grad_local[1],
-                           s * grad_local[0] + c * grad_local[1]])
-    g = _g(1)
-    g[0, 0:2] = grad_world
-    rows.add(np.array([sd - rp]), P.through(g), Label(step, f"overlaps {rect.name}"))
+            out = np.maximum(q, 0.0)
+            sd = float(np.linalg.norm(out))
+            gl = out / sd * sgn
+    gc = gl[0] * ex + gl[1] * ey
+    gr = np.zeros(12)
+    gr[0:2] = -gc
+    gr[3:5] = gl[0] * d
+    gr[6:8] = gl[1] * d
+    return float(sd), gr, gc
+
+
+def apart(rows: RowSet, step: str, P: PoseX, pinfo: BodyInfo, Q: PoseX, qinfo: BodyInfo,
+          other: str, gap: float = GAP) -> None:
+    """Footprints apart by `gap`, exactly: disks by their centres, a disk and a box by
+    the centre's distance from the box, two boxes by the separating axis theorem."""
+    gp, gq = np.zeros((1, 12)), np.zeros((1, 12))
+    if pinfo.disk and qinfo.disk:
+        d = P.pos[:2] - Q.pos[:2]
+        n = float(np.linalg.norm(d))
+        u = d / n if n > 1e-12 else np.array([1.0, 0.0])
+        val = n - pinfo.half[0] - qinfo.half[0]
+        gp[0, 0:2], gq[0, 0:2] = u, -u
+    elif pinfo.disk or qinfo.disk:
+        (D, dinfo, gd), (R, rinfo, gr) = ((P, pinfo, gp), (Q, qinfo, gq)) if pinfo.disk \
+            else ((Q, qinfo, gq), (P, pinfo, gp))
+        sd, g_r, g_c = _rect_point(R, rinfo, D.pos[:2])
+        val = sd - dinfo.half[0]
+        gr[0] = g_r
+        gd[0, 0:2] = g_c
+    else:
+        val, gp[0], gq[0] = _sat(P, pinfo, Q, qinfo)
+    rows.add(np.array([val - gap]), _pair_jac(P, gp, Q, gq), Label(step, f"overlaps {other}"))
 
 
 def within_reach(rows: RowSet, step: str, P: PoseX, centre, reach: float) -> None:
@@ -174,6 +216,15 @@ def same_pose(rows: RowSet, ineq: RowSet, step: str, H: PoseX, target: PoseX, pl
         for name, v in target.through(go).items():
             jac[name] = jac[name] + v if name in jac else v
         rows.add(np.array([val]), jac, Label(step, "gripper not aligned with the faces", "rad"))
+
+
+def same_yaw(rows: RowSet, step: str, P: PoseX, Q: PoseX) -> None:
+    """P turned as Q: sin(yaw_P - yaw_Q) = 0 (both upright; starts on the right branch)."""
+    val = Q.ax[0] * P.ax[1] - Q.ax[1] * P.ax[0]
+    gp, gq = _g(1), _g(1)
+    gp[0, 3], gp[0, 4] = -Q.ax[1], Q.ax[0]
+    gq[0, 3], gq[0, 4] = P.ax[1], -P.ax[0]
+    rows.add(np.array([val]), _pair_jac(P, gp, Q, gq), Label(step, "turned", "rad"))
 
 
 def point_in_rect(rows: RowSet, step: str, P: PoseX, lo, hi, what: str) -> None:

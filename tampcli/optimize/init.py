@@ -13,39 +13,19 @@ import math
 
 import numpy as np
 
+from tampcli.optimize import final_starts
 from tampcli.optimize.bodies import pose_matrix
 from tampcli.optimize.grips import Grip
 from tampcli.optimize.problem import TrajectoryProblem
-from tampcli.optimize.values import GripChoice, Keyframes, Placement
+from tampcli.optimize.values import GripChoice, Keyframes
 from tampcli.optimize.world_state import grip_of
 
 
-def final_guess(problem: TrajectoryProblem, warm=None):
-    """(placements, origins): a values.Placement per placing step (by step index),
-    and the (x, y) point each is pulled towards.
-
-    `warm`: step index -> values.Placement. The pull is to the middle of the
-    target (region centre, support centre): away from rims and from clutter
-    around the target, and a well-posed NLP when the target has room to spare.
-    """
-    placements, origins = {}, {}
-    where = {n: np.array(i.pose[:2]) for n, i in problem.bodies.items()}
-    yaw = {n: i.pose[3] for n, i in problem.bodies.items()}
-    regions = {r.name: r for r in problem.scene.regions}
-    for step in problem.steps:
-        if not step.kind.places:
-            continue
-        target = (np.asarray(regions[step.target].center, dtype=float)
-                  if step.target in regions else where[step.target].copy())
-        origins[step.index] = target
-        if warm and step.index in warm:
-            p = warm[step.index]
-        else:
-            p = Placement(float(target[0]), float(target[1]), float(yaw[step.obj]))
-        placements[step.index] = p
-        where[step.obj] = np.array([p.x, p.y])
-        yaw[step.obj] = p.yaw
-    return placements, origins
+def final_guess(problem: TrajectoryProblem):
+    """(placements, origins) of the final NLP's first start (final_starts.starts):
+    a values.Placement per placing step (by step index), and the (x, y) point each
+    is pulled towards."""
+    return final_starts.starts(problem)[0](problem)
 
 
 class GuessWalk:

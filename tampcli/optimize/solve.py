@@ -17,8 +17,9 @@ import numpy as np
 
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
+from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import Kinematics
-from tampcli.optimize.init import final_guess, keyframe_guess
+from tampcli.optimize.init import keyframe_guess
 from tampcli.optimize.layout import keyframe_block
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, solve_nlp
 from tampcli.optimize.options import OptimizeOptions
@@ -77,7 +78,7 @@ def solve(problem: TrajectoryProblem, stage: str, warm: TrajectoryResult | None 
                           bound_kind="proved", violation=math.inf)
     try:
         if stage == "final":
-            return _final(run, warm)
+            return _final(run)
         if stage == "keyframes":
             return _keyframes(run, warm)
         return _path(run, warm)
@@ -129,25 +130,33 @@ def _beyond_reach(problem) -> str | None:
     return None
 
 
-def _placements(run: _Run, warm):
-    """Run the final NLP; returns (outcome or None when there is nothing to place, values)."""
+def _placements(run: _Run):
+    """Run the final NLP from each of final_starts.starts until one solves; returns
+    (outcome or None when there is nothing to place, values). Its outcome depends on
+    the skeleton alone (no warm start from another skeleton: see final_starts)."""
     problem = run.problem
     layout = final_layout(problem)
-    prior = warm.placements if warm is not None else None
-    placements, origins = final_guess(problem, prior)
     if layout.size == 0:
         return None, {}
     bounds = [(-1e3, 1e3)] * layout.size
-    out = run.nlp(lambda x: final_rows(problem, layout.unpack(x), origins), layout,
-                  layout.pack(placement_blocks(placements)), bounds)
+    best = None
+    for start in starts(problem):
+        placements, origins = start(problem)
+        out = run.nlp(lambda x, origins=origins: final_rows(problem, layout.unpack(x), origins),
+                      layout, layout.pack(placement_blocks(placements)), bounds)
+        if best is None or out.status == "solved" or out.violation < best[0].violation:
+            best = (out, placements)
+        if out.status == "solved" or time.perf_counter() > run.deadline:
+            break
+    out, placements = best
     return out, placements_from_blocks(layout.unpack(out.x), placements)
 
 
-def _final(run: _Run, warm) -> TrajectoryResult:
+def _final(run: _Run) -> TrajectoryResult:
     why = _too_small(run.problem) or _beyond_reach(run.problem)
     if why:
         return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
-    out, placements = _placements(run, warm)
+    out, placements = _placements(run)
     if out is None:
         return run.result("solved", cost=0.0)
     if out.status != "solved":
@@ -175,7 +184,7 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
     if have and warm.names == problem.names:
         placements = warm.placements
     else:
-        out, placements = _placements(run, warm)
+        out, placements = _placements(run)
         if out is not None and out.status != "solved":
             return run.result(out.status, violation=out.violation,
                               worst_constraint=f"placements: {out.worst}")

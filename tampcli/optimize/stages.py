@@ -15,12 +15,15 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from tampcli.optimize import constraints as C
+from tampcli.optimize import stability as S
 from tampcli.optimize.collide import body_matrices, contact_rows, held_of, held_spec, row_keys
 from tampcli.optimize.expr import PoseX, RowSet, constant_pose, held_posex, planar_pose
 from tampcli.optimize.grips import held_pose
 from tampcli.optimize.layout import Layout, grip_block, keyframe_block, placement_block
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.world_state import grip_of, reach_of, vertical_overlap
+
+PULL = 1e-2  # cost per m^2 of a placement's distance from its origin (final NLP)
 
 
 @dataclass
@@ -41,14 +44,48 @@ def keyframe_layout(problem: TrajectoryProblem) -> Layout:
     return Layout(tuple(blocks))
 
 
-def _start_state(problem) -> tuple[dict[str, PoseX], dict[str, float]]:
+def _start_state(problem) -> tuple[dict[str, PoseX], dict[str, float], dict[str, str | None]]:
+    """(pose, resting height, support) of every movable object at the start."""
     movable = {n: i for n, i in problem.bodies.items() if not i.fixed}
     return ({n: constant_pose(*i.pose) for n, i in movable.items()},
-            {n: i.pose[2] for n, i in movable.items()})
+            {n: i.pose[2] for n, i in movable.items()},
+            {n: problem.start_supports.get(n) for n in movable})
 
 
-def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: dict) -> None:
-    """Where a released or pushed object ends: inside its region / on its body, apart.
+def _pose_of(problem, name: str, state: dict) -> PoseX:
+    return state[name] if name in state else constant_pose(*problem.bodies[name].pose)
+
+
+def load_of(name: str, state: dict, supports: dict) -> list[str]:
+    """`name` and everything resting on it, directly or higher up (what it carries)."""
+    out, frontier = [name], [name]
+    while frontier:
+        below = frontier.pop()
+        above = [o for o in state if supports.get(o) == below and o not in out]
+        out += above
+        frontier += above
+    return out
+
+
+def _stability_rows(rows: Rows, problem, step, state: dict, supports: dict) -> None:
+    """The placed object and every body under it keep their loads' centre of mass
+    over their supports' top faces (stability.py)."""
+    bodies = problem.bodies
+    base, support, seen = step.obj, step.support, set()
+    while support is not None and base not in seen:
+        seen.add(base)
+        load = [(state[n], bodies[n].mass) for n in load_of(base, state, supports)]
+        S.com_on_face(rows.ineq, step.name, load, bodies[base], _pose_of(problem, support, state),
+                      bodies[support])
+        if support not in state:
+            break
+        base, support = support, supports.get(support)
+
+
+def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: dict,
+                    supports: dict) -> None:
+    """Where a released or pushed object ends: inside its region / on its body, apart,
+    standing (stability.py). The object joins `state` resting on its support.
 
     `heights`: the resting height of every movable object (from the stack below it,
     not from x, so the set of rows does not change between evaluations).
@@ -59,25 +96,35 @@ def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: d
     if step.target in regions:
         C.inside_region(rows.ineq, name, P, info, regions[step.target])
     elif step.target is not None:
-        C.on_top_of(rows.ineq, name, P, state[step.target] if step.target in state
-                    else constant_pose(*problem.bodies[step.target].pose),
-                    problem.bodies[step.target])
+        S.footprint_on_face(rows.ineq, name, P, info, _pose_of(problem, step.target, state),
+                            problem.bodies[step.target])
     z = step.rest_z
     for other, Q in state.items():
         if other in (step.obj, step.support):
             continue
         oinfo = problem.bodies[other]
         if vertical_overlap(z, info.half[2], heights[other], oinfo.half[2]):
-            C.apart_disks(rows.ineq, name, P, info.radius, Q, oinfo.radius, other)
-    # Against fixed bodies the object's inscribed circle: these rows steer the
-    # placement (and decide the "final" stage); the keyframe stage's collision
-    # rows then check the true shapes, so a circumscribed circle would only
-    # reject tight placements that are feasible.
+            C.apart(rows.ineq, name, P, info, Q, oinfo, other)
     for other, oinfo in problem.bodies.items():
         if oinfo.fixed and other != step.support and vertical_overlap(
                 z, info.half[2], oinfo.pose[2], oinfo.half[2]):
-            C.apart_rect(rows.ineq, name, P, info.radius if info.disk else
-                         min(info.half[0], info.half[1]), oinfo)
+            C.apart(rows.ineq, name, P, info, constant_pose(*oinfo.pose), oinfo, other)
+    if _stacked(problem, step):
+        # Part of both NLPs' objective (docs/formats.md, "Stacking and stability").
+        cost, grad = S.align_cost(P, info, _pose_of(problem, step.support, state),
+                                  problem.bodies[step.support])
+        rows.cost += cost
+        for k, g in grad.items():
+            rows.cost_grad[k] = rows.cost_grad.get(k, 0.0) + g
+    state[step.obj] = P
+    heights[step.obj] = z
+    supports[step.obj] = step.support
+    _stability_rows(rows, problem, step, state, supports)
+
+
+def _stacked(problem, step) -> bool:
+    """Placed on a body rather than into a region."""
+    return step.target is not None and step.target not in {r.name for r in problem.scene.regions}
 
 
 class FinalWalk:
@@ -88,22 +135,29 @@ class FinalWalk:
         self.vals = vals
         self.origins = origins
         self.rows = Rows()
-        self.state, self.heights = _start_state(problem)
+        self.state, self.heights, self.supports = _start_state(problem)
+        self.last = dict(self.state)  # where each object last rested (it keeps that yaw held)
         self.centre, self.reach = reach_of(problem)
 
     def place(self, step) -> None:
-        """The step's object comes to rest at its placement block, near its target's middle."""
+        """The step's object comes to rest at its placement block: near its origin on a
+        region, aligned with the body below on a body (the costs are the NLP's objective)."""
         block = placement_block(step.index)
         x, y, yaw = self.vals[block]
         P = planar_pose(block, x, y, step.rest_z, yaw)
-        _placement_rows(self.rows, self.problem, step, P, self.state, self.heights)
+        stacked = _stacked(self.problem, step)
+        _placement_rows(self.rows, self.problem, step, P, self.state, self.heights,
+                        self.supports)
         if np.isfinite(self.reach):
             C.within_reach(self.rows.ineq, step.name, P, self.centre, self.reach)
-        self.state[step.obj] = P
-        self.heights[step.obj] = step.rest_z
-        d = np.array([x, y]) - self.origins[step.index]
-        self.rows.cost += 1e-2 * float(d @ d)
-        self.rows.cost_grad[block] = np.array([2e-2 * d[0], 2e-2 * d[1], 0.0])
+        if self.problem.planar:
+            # The planar robot does not turn what it carries or pushes.
+            C.same_yaw(self.rows.eq, step.name, P, self.last[step.obj])
+        self.last[step.obj] = P
+        if not stacked:
+            d = np.array([x, y]) - self.origins[step.index]
+            self.rows.cost += PULL * float(d @ d)
+            self.rows.cost_grad[block] = np.array([2 * PULL * d[0], 2 * PULL * d[1], 0.0])
 
 
 def final_rows(problem: TrajectoryProblem, vals: dict, origins: dict) -> Rows:
@@ -126,7 +180,7 @@ class KeyframeWalk:
         self.tool_frames = tool_frames
         self.collisions = collisions
         self.rows = Rows()
-        self.state, self.heights = _start_state(problem)
+        self.state, self.heights, self.supports = _start_state(problem)
         self.held = None  # (name, grip step)
         # Collision rows of all keyframes come from one batched query after the walk,
         # each keyframe in its own world state (what rests where, what is held).
@@ -159,7 +213,9 @@ class KeyframeWalk:
             self.pending.append((k, step.name, held, frame, frozenset(ignore), moved))
 
     def placement_rows(self, step, P: PoseX) -> None:
-        _placement_rows(self.rows, self.problem, step, P, self.state, self.heights)
+        """The step's object rests at P from here on (it joins `state`)."""
+        _placement_rows(self.rows, self.problem, step, P, self.state, self.heights,
+                        self.supports)
 
 
 def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, checker,

@@ -7,6 +7,8 @@ in the keyframe NLP a function of the tool through the grip of its grasp.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from tampcli.geometry import transforms
@@ -15,6 +17,7 @@ from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import LoweringError, Step
+from tampcli.optimize.stability import unstable
 
 
 class Place(ModeKind):
@@ -63,7 +66,7 @@ class Place(ModeKind):
         grasp = walk.problem.steps[step.grasp_step]
         grip = walk.grip_of(grasp)
         if walk.planar:
-            q = walk.planar_q(np.array([x, y, step.rest_z]), grip, walk.grip[grasp.index])
+            q = self._planar_side(walk, step, grasp, grip, np.array([x, y, step.rest_z]))
             P = pose_matrix(x, y, step.rest_z, yaw)
         else:
             held = grip.matrix(walk.grip.get(grasp.index, 0.0))
@@ -79,6 +82,45 @@ class Place(ModeKind):
         walk.poses[step.obj] = P
         walk.q[k] = q
         walk.q_prev = q
+
+    @staticmethod
+    def _planar_side(walk, step, grasp, grip, at: np.ndarray) -> np.ndarray:
+        """The planar robot's configuration at the place; it may move the contact side
+        its grasp chose.
+
+        The grasp takes the side facing the robot's approach, which can leave the
+        disk on the side of the placement that a neighbour occupies (measured: the
+        second of two blocks put side by side in a walled bay, the disk between the
+        two). When the disk at the place would touch something, every face of the
+        object is tried for the contact, clear at the place first, then clear at the
+        grasp, then nearest the grasp's choice; the grasp's keyframe follows.
+        """
+        phi0 = walk.grip[grasp.index]
+        problem = walk.problem
+        if problem.checker is None:
+            return walk.planar_q(at, grip, phi0)
+        start = walk.poses[step.obj]
+        others = {n: t for n, t in walk.poses.items() if n != step.obj}
+        horizon = problem.options.margin
+
+        def clash(phi):
+            q_place = walk.planar_q(at, grip, phi)
+            q_pick = walk.planar_q(start[:3, 3], grip, phi)
+            # The robot alone: where the held object ends does not depend on phi.
+            place = problem.checker.min_distance(
+                q_place, others, None, frozenset({step.support}), static=False,
+                horizon=horizon) < horizon
+            pick = problem.checker.min_distance(
+                q_pick, others, None, frozenset({step.obj}), static=False,
+                horizon=horizon) < horizon
+            return place, pick, abs(math.remainder(phi - phi0, 2 * math.pi))
+
+        best = min([phi0] + [transforms.yaw_of(start) + d for d in walk.QUARTERS], key=clash)
+        if best != phi0:
+            walk.grip[grasp.index] = float(best)
+            (kg,) = grasp.keyframes
+            walk.q[kg] = walk.planar_q(start[:3, 3], grip, best)
+        return walk.planar_q(at, grip, best)
 
     def reseed(self, walk, step, k):
         pass
@@ -104,4 +146,6 @@ class Place(ModeKind):
         walk.instant(step)
 
     def check(self, walk, step):
-        return walk.rest(step)
+        poses = {n: walk.after(n) if n in walk.poses else pose_matrix(*i.pose)
+                 for n, i in walk.problem.bodies.items()}
+        return walk.rest(step) + unstable(walk.problem, step, poses)

@@ -1,0 +1,147 @@
+"""Starting points of the "final" NLP: where each placement begins, and what pulls it.
+
+The final NLP places every object of a skeleton at once, so an earlier
+placement still moves when a later one needs its room; what the starting
+point decides is which local optimum SLSQP finds. Measured on the robust
+packing problems (several objects into one region, under 15 % slack): from
+every object at the region's middle the NLP ended with two of them
+overlapping for every order. Three starts, tried in turn until one solves:
+the region's middle (with room to spare the NLP pushes the objects apart
+from there; the keyframe stage, whose grasp sides follow the robot's
+approach, was tuned on such placements); a row along the region's long
+side, the first placed at the end farthest from the robot (a later one need
+not pass it), equal gaps (first when a region is tight: see `starts`); each
+placement where it is clearest of what rests there by then. Each start is a function of the skeleton
+alone: never of a neighbouring skeleton's result, so a skeleton's outcome
+does not depend on what was evaluated before it or on what follows it.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from tampcli.optimize.values import Placement
+
+GRID = 9  # candidate points per side of a region for the clearest start
+
+
+def _regions(problem) -> dict:
+    return {r.name: r for r in problem.scene.regions}
+
+
+def _placing(problem) -> list:
+    return [s for s in problem.steps if s.kind.places]
+
+
+def _extent(info, yaw: float, axis: int) -> float:
+    """The footprint's width along world axis `axis` at `yaw`."""
+    if info.disk:
+        return 2 * info.half[0]
+    c, s = abs(math.cos(yaw)), abs(math.sin(yaw))
+    hx, hy = info.half[0], info.half[1]
+    return 2 * (c * hx + s * hy if axis == 0 else s * hx + c * hy)
+
+
+def _robot_xy(problem) -> np.ndarray:
+    world = problem.world
+    return np.asarray(world.tool_pose(world.start)[:2, 3], dtype=float)
+
+
+def _walk(problem, pick) -> tuple[dict, dict]:
+    """(placements, origins) with `pick(step, where, yaw, target)` choosing each
+    placement on a region; a stacked object starts over its support."""
+    placements, origins = {}, {}
+    where = {n: np.array(i.pose[:2]) for n, i in problem.bodies.items()}
+    yaw = {n: i.pose[3] for n, i in problem.bodies.items()}
+    regions = _regions(problem)
+    for step in _placing(problem):
+        if step.target in regions:
+            xy = np.asarray(pick(step, where, yaw, regions[step.target]), dtype=float)
+        else:
+            xy = where[step.target].copy()
+        origins[step.index] = xy
+        placements[step.index] = Placement(float(xy[0]), float(xy[1]), float(yaw[step.obj]))
+        where[step.obj] = xy
+    return placements, origins
+
+
+def packed(problem) -> tuple[dict, dict]:
+    """Placements into one region in a row along its long side, the first farthest
+    from the robot, equal gaps between them and at the ends."""
+    regions = _regions(problem)
+    robot = _robot_xy(problem)
+    slots: dict[int, np.ndarray] = {}
+    for name, region in regions.items():
+        steps = [s for s in _placing(problem) if s.target == name]
+        if not steps:
+            continue
+        axis = int(np.argmax(region.size))
+        lo, hi = float(region.lower[axis]), float(region.upper[axis])
+        widths = [_extent(problem.bodies[s.obj], problem.bodies[s.obj].pose[3], axis)
+                  for s in steps]
+        gap = (hi - lo - sum(widths)) / (len(steps) + 1)
+        far_high = abs(hi - robot[axis]) >= abs(lo - robot[axis])
+        at = hi if far_high else lo
+        sign = -1.0 if far_high else 1.0
+        for s, w in zip(steps, widths, strict=True):
+            centre = at + sign * (gap + 0.5 * w)
+            at = centre + sign * 0.5 * w
+            xy = np.asarray(region.center, dtype=float).copy()
+            xy[axis] = centre
+            slots[s.index] = xy
+    return _walk(problem, lambda step, where, yaw, region: slots[step.index])
+
+
+def clearest(problem) -> tuple[dict, dict]:
+    """Each placement at the grid point of its region farthest from what rests there
+    (at the start, or placed by an earlier step of this start) by then."""
+    bodies = problem.bodies
+    resting = {n for n, i in bodies.items() if not i.fixed}
+
+    def pick(step, where, yaw, region):
+        info = bodies[step.obj]
+        lo, hi = np.asarray(region.lower), np.asarray(region.upper)
+        half = 0.5 * np.array([_extent(info, yaw[step.obj], 0), _extent(info, yaw[step.obj], 1)])
+        a, b = np.minimum(lo + half, region.center), np.maximum(hi - half, region.center)
+        xs, ys = np.linspace(a[0], b[0], GRID), np.linspace(a[1], b[1], GRID)
+        cand = np.array([[x, y] for x in xs for y in ys])
+        others = [n for n in resting if n != step.obj]
+        if not others:
+            return np.asarray(region.center, dtype=float)
+        gaps = np.min([np.linalg.norm(cand - where[n], axis=1) - bodies[n].radius
+                       for n in others], axis=0)
+        return cand[int(np.argmax(gaps))]
+
+    return _walk(problem, pick)
+
+
+def centred(problem) -> tuple[dict, dict]:
+    """Every placement at its region's middle (a well-posed NLP with room to spare)."""
+    return _walk(problem, lambda step, where, yaw, region: region.center)
+
+
+TIGHT = 0.3  # a region whose row of placements leaves less of its length free is packed
+
+
+def _tight(problem) -> bool:
+    """Does some region receive several placements with under TIGHT of its long side
+    to spare (at the objects' start yaws)?"""
+    for name, region in _regions(problem).items():
+        steps = [s for s in _placing(problem) if s.target == name]
+        if len(steps) < 2:
+            continue
+        axis = int(np.argmax(region.size))
+        used = sum(_extent(problem.bodies[s.obj], problem.bodies[s.obj].pose[3], axis)
+                   for s in steps)
+        if used > (1.0 - TIGHT) * region.size[axis]:
+            return True
+    return False
+
+
+def starts(problem) -> tuple:
+    """The starts to try in order: the packed row first when a region is tight."""
+    if _tight(problem):
+        return (packed, centred, clearest)
+    return (centred, packed, clearest)
