@@ -16,7 +16,6 @@ def solve_minlp(domain_path, problem_path, scene_path=None, modes_path=None,
     """Imported lazily: pyscipopt is an optional extra (`pip install tampcli[minlp]`)."""
     from tampcli.minlp.solve import solve_minlp as run
 
-
     return run(domain_path, problem_path, scene_path, modes_path, options)
 
 

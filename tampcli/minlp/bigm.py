@@ -16,6 +16,8 @@ Term = tuple[float, object]  # (coefficient, SCIP variable)
 
 
 def _bounds(var) -> tuple[float, float]:
+    if isinstance(var, float | int):
+        return float(var), float(var)
     return var.getLbOriginal(), var.getUbOriginal()
 
 
