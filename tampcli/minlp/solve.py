@@ -11,10 +11,13 @@ graze a round body.
 from __future__ import annotations
 
 import time
+from dataclasses import dataclass
 
 from tampcli.errors import InputError, SceneError
 from tampcli.minlp.extract import extract
+from tampcli.minlp.model import build
 from tampcli.minlp.options import MinlpOptions
+from tampcli.minlp.warm import add_warm_start
 from tampcli.solution import Solution
 
 
@@ -22,44 +25,13 @@ def solve_minlp(domain_path: str, problem_path: str, scene_path: str | None = No
                 modes_path: str | None = None, options: MinlpOptions | None = None) -> Solution:
     options = options or MinlpOptions()
     started = time.perf_counter()
-    seconds: dict[str, float] = {}
-    from tampcli.geometry.locate import find_modes, find_scene
-    from tampcli.geometry.scene import load_modes, load_scene
-    from tampcli.geometry.world import World
-    from tampcli.minlp.model import build
-    from tampcli.minlp.symbolic import check_supported
-    from tampcli.minlp.warm import add_warm_start
-    from tampcli.pddl import parser
-    from tampcli.task.ground import ground
-
-    domain = parser.parse_domain_file(domain_path)
-    problem = parser.parse_problem_file(problem_path)
-    task = ground(domain, problem)
-    check_supported(task, problem_path)
-    scene_file = scene_path or find_scene(problem_path)
-    if scene_file is None:
-        raise InputError("the MINLP needs a scene (none given, none beside the problem)",
-                         problem_path)
-    modes_file = modes_path or find_modes(domain_path)
-    if modes_file is None:
-        raise SceneError("the problem has a scene but the domain has no modes.toml beside it "
-                         "(or pass --modes)", domain_path)
-    modes = load_modes(modes_file, domain)
-    scene = load_scene(str(scene_file), domain, problem, modes=modes, geometric=False)
-    from tampcli.minlp.footprint import robot_footprint
-
-    robot_footprint(scene, options.polygon_sides, True)  # refuse a non-planar robot first
-    scene = load_scene(str(scene_file), domain, problem, modes=modes)
-    with World(scene) as world:
-        lower, upper, start = world.lower, world.upper, world.start
-        robot = {"model": scene.robot.model, "joints": list(world.joint_names),
-                 "tool_link": world.tool_link}
-    forced = _op_indices(task, options.forced, "forced")
-    forbidden = _op_indices(task, options.forbidden, "forbidden")
-    seconds["setup"] = time.perf_counter() - started
+    prepared = prepare(domain_path, problem_path, scene_path, modes_path, options)
+    task, scene, modes = prepared.task, prepared.scene, prepared.modes
+    seconds = {"setup": time.perf_counter() - started}
 
     tic = time.perf_counter()
-    built = build(task, scene, modes, lower, upper, start, options, forced, forbidden)
+    built = build(task, scene, modes, prepared.lower, prepared.upper, prepared.start, options,
+                  prepared.forced, prepared.forbidden)
     model = built.model
     model.setParam("limits/time", options.time_limit)
     model.setParam("limits/gap", options.gap)
@@ -82,8 +54,8 @@ def solve_minlp(domain_path: str, problem_path: str, scene_path: str | None = No
              "primal_bound": _finite(model.getPrimalbound()) if has_sol else None,
              "gap": _finite(model.getGap()) if has_sol else None,
              "warm_start": warm, "seconds": {k: round(v, 4) for k, v in seconds.items()}}
-    common = dict(domain=domain_path, problem=problem_path, scene=str(scene_file),
-                  modes=str(modes_file), robot=robot, stats=stats,
+    common = dict(domain=domain_path, problem=problem_path, scene=prepared.scene_file,
+                  modes=prepared.modes_file, robot=prepared.robot, stats=stats,
                   symbolic_weight=options.symbolic_weight, lower_bound=_finite(dual))
     if not has_sol:
         if status == "infeasible":
@@ -93,11 +65,67 @@ def solve_minlp(domain_path: str, problem_path: str, scene_path: str | None = No
         return Solution(status="limit", reason=f"SCIP stopped ({status}) without a solution",
                         **common)
     found = extract(built, task, scene, model.getBestSol())
+    objective = found.cost + options.symbolic_weight * found.symbolic_cost
+    if common["lower_bound"] is not None:
+        # The cost recomputed from the waypoints may undercut SCIP's primal value by its
+        # feasibility tolerance; a bound above the reported objective would read as a bug.
+        common["lower_bound"] = min(common["lower_bound"], objective)
     return Solution(status="solved", reason=None, plan=found.plan,
-                    symbolic_cost=found.symbolic_cost, cost=found.cost,
-                    objective=found.cost + options.symbolic_weight * found.symbolic_cost,
+                    symbolic_cost=found.symbolic_cost, cost=found.cost, objective=objective,
                     trajectory=found.trajectory, phases=found.phases, objects=found.objects,
                     **common)
+
+
+@dataclass(frozen=True)
+class Prepared:
+    """The inputs of the model, loaded and checked."""
+
+    task: object
+    scene: object
+    modes: object
+    scene_file: str
+    modes_file: str
+    lower: tuple[float, float]  # the robot's joint limits (x, y)
+    upper: tuple[float, float]
+    start: tuple[float, float]
+    robot: dict  # solution.json's `robot`
+    forced: frozenset[int]
+    forbidden: frozenset[int]
+
+
+def prepare(domain_path, problem_path, scene_path, modes_path, options) -> Prepared:
+    from tampcli.geometry.locate import find_modes, find_scene
+    from tampcli.geometry.scene import load_modes, load_scene
+    from tampcli.geometry.world import World
+    from tampcli.minlp.footprint import robot_footprint
+    from tampcli.minlp.symbolic import check_supported
+    from tampcli.pddl import parser
+    from tampcli.task.ground import ground
+
+    domain = parser.parse_domain_file(domain_path)
+    problem = parser.parse_problem_file(problem_path)
+    task = ground(domain, problem)
+    check_supported(task, problem_path)
+    scene_file = scene_path or find_scene(problem_path)
+    if scene_file is None:
+        raise InputError("the MINLP needs a scene (none given, none beside the problem)",
+                         problem_path)
+    modes_file = modes_path or find_modes(domain_path)
+    if modes_file is None:
+        raise SceneError("the problem has a scene but the domain has no modes.toml beside it "
+                         "(or pass --modes)", domain_path)
+    modes = load_modes(modes_file, domain)
+    scene = load_scene(str(scene_file), domain, problem, modes=modes, geometric=False)
+    robot_footprint(scene, options.polygon_sides, True)  # a non-planar robot: refused here
+    scene = load_scene(str(scene_file), domain, problem, modes=modes)
+    with World(scene) as world:
+        limits = (tuple(map(float, world.lower)), tuple(map(float, world.upper)),
+                  tuple(map(float, world.start)))
+        robot = {"model": scene.robot.model, "joints": list(world.joint_names),
+                 "tool_link": world.tool_link}
+    return Prepared(task, scene, modes, str(scene_file), str(modes_file), *limits, robot,
+                    _op_indices(task, options.forced, "forced"),
+                    _op_indices(task, options.forbidden, "forbidden"))
 
 
 def _finite(x: float) -> float | None:
