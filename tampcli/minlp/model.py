@@ -86,6 +86,7 @@ def build(task, scene, modes, lower, upper, start, options, forced=frozenset(),
     _targets(model, r, objects, sym, geometry, scene, shapes, steps)
     binaries = _collisions(model, r, objects, carry, robot_shape, shapes, scene, steps)
 
+    _decide_first(model, sym, carry, steps)
     cost = []
     for k in range(steps):
         s = model.addVar(f"seg_{k}", lb=0.0)
@@ -96,6 +97,14 @@ def build(task, scene, modes, lower, upper, start, options, forced=frozenset(),
                              for i, op in enumerate(task.operators))
     model.setObjective(quicksum(cost) + options.symbolic_weight * symbolic_cost, "minimize")
     return Built(model, steps, tuple(r), objects, sym, carry, geometry, tuple(cost), binaries)
+
+
+def _decide_first(model, sym, carry: Carry, steps: int) -> None:
+    """Branch on what happens when before on which face a segment passes: once the
+    actions are fixed, the rest is a much smaller problem."""
+    for k in range(1, steps + 1):
+        for var in (*sym.d[k], *(carry.start[o][k] for o in carry.start)):
+            model.chgVarBranchPriority(var, 10)
 
 
 def _diff(a, b, c, d_, axis):
