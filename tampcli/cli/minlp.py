@@ -18,7 +18,7 @@ def add_parser(p) -> None:
     p.add_argument("--scene", help="scene.toml (default: PROBLEM's name + .scene.toml beside it)")
     p.add_argument("--modes", help="modes.toml (default: beside the domain file)")
     p.add_argument("--time-limit", type=float, default=120.0, metavar="S",
-                   help="seconds SCIP may spend (default 120)")
+                   help="CPU seconds SCIP may spend (default 120)")
     p.add_argument("--symbolic-weight", type=float, default=0.1, metavar="W",
                    help="objective = trajectory cost + W * symbolic cost (default 0.1)")
     p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")

@@ -15,7 +15,8 @@ class MinlpOptions:
 
     steps: T, the motion steps; the trajectory has T + 1 waypoints and every
         action happens at one of waypoints 1..T.
-    time_limit: seconds SCIP may spend (model building not counted).
+    time_limit: CPU seconds SCIP may spend (its own clock; model building not counted):
+        on a shared machine the wall time is longer, the search the same.
     symbolic_weight: w in objective = trajectory cost + w * symbolic cost, as branch and bound.
     gap: SCIP stops when (primal - dual) / |primal| falls to this (0.0001 is SCIP's default).
     polygon_sides: a round footprint (the robot's disk, a cylinder) becomes a regular polygon
