@@ -25,8 +25,10 @@ writes bench/results/minlp.md.
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import platform
+import subprocess
 import sys
 import tempfile
 import time
@@ -55,7 +57,7 @@ def _paths(key: str) -> tuple[str, str]:
 
 
 def _valid(sol, domain: str, problem: str) -> str:
-    from tampcli.optimize.verify import verify_solution_file
+    """`tampcli validate` on the solution, as a user runs it."""
     from tampcli.solution import write
 
     if not sol.solved:
@@ -63,8 +65,15 @@ def _valid(sol, domain: str, problem: str) -> str:
     with tempfile.TemporaryDirectory() as tmp:
         path = Path(tmp) / "solution.json"
         write(sol, path)
-        found = verify_solution_file(path, domain, problem)
-    return "yes" if not found else f"no: {found[0][:60]}"
+        run = subprocess.run([sys.executable, "-m", "tampcli", "validate", domain, problem,
+                              str(path), "--json"], capture_output=True, text=True, cwd=ROOT)
+    try:
+        report = json.loads(run.stdout)
+    except json.JSONDecodeError:
+        return f"no: exit {run.returncode}"
+    if report.get("valid"):
+        return "yes"
+    return "no: " + "; ".join(v["text"] for v in report.get("violations", []))[:80]
 
 
 def run_bnb(key: str, waypoints: int, time_limit: float):
