@@ -63,7 +63,7 @@ def test_hold_follows_grasp_and_place():
 
 def test_the_solution_on_planar_push_p01_at_8_steps_validates(minlp_cli, cli, tmp_path):
     out = tmp_path / "p01.solution.json"
-    run = minlp_cli("minlp", *PUSH, "--steps", "8", "--time-limit", "10", "--gap", "0.05",
+    run = minlp_cli("minlp", *PUSH, "--steps", "8", "--time-limit", "4", "--gap", "0.05",
                     "--out", out)
     assert run.code == 0, run.err
     data = json.loads(out.read_text())
