@@ -92,6 +92,13 @@ def build(task, scene, modes, lower, upper, start, options, forced=frozenset(),
         s = model.addVar(f"seg_{k}", lb=0.0)
         model.addCons(quicksum((r[k + 1][a] - r[k][a]) * (r[k + 1][a] - r[k][a])
                                for a in range(2)) <= s, name=f"segcost_{k}")
+        if objects:
+            # Valid without big-M: at most one object moves in a segment, and only as far
+            # as the disk does; it lets the relaxation see that what must reach the goal
+            # drags the robot along.
+            model.addCons(quicksum((o[k + 1][a] - o[k][a]) * (o[k + 1][a] - o[k][a])
+                                   for o in objects.values() for a in range(2)) <= s,
+                          name=f"dragged_{k}")
         cost.append(s)
     symbolic_cost = quicksum(op.cost * sym.d[k][i] for k in range(1, steps + 1)
                              for i, op in enumerate(task.operators))

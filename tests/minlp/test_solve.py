@@ -67,7 +67,9 @@ def test_the_solution_on_planar_push_p01_at_8_steps_validates(minlp_cli, cli, tm
                     "--out", out)
     assert run.code == 0, run.err
     data = json.loads(out.read_text())
-    assert data["plan"] == ["(push box start goal table)"]
+    # Within a few seconds SCIP may still hold the costlier skeleton: both must validate.
+    assert data["plan"] in (["(push box start goal table)"],
+                            ["(pick box start)", "(place box goal)"])
     assert len(data["trajectory"]) == 9
     assert data["lower_bound"] <= data["objective"] + 1e-9
     check = cli("validate", *PUSH, out)
