@@ -19,7 +19,9 @@ the task's fact and action variables (symbolic.py) and the carry state
   carrying, and the carried object against every other body, except what
   the robot slides on (bodies whose height span only touches theirs).
 
-Each implication is big-M with M from the variable bounds (bigm.py).
+Each implication is big-M with M from the variable bounds (bigm.py). Each
+segment's cost also bounds the squared displacement of the objects in it (an
+object moves only with the disk): a valid inequality free of big-M.
 """
 
 from __future__ import annotations
