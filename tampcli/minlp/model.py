@@ -85,7 +85,7 @@ def build(task, scene, modes, lower, upper, start, options, forced=frozenset(),
 
     _motion(model, r, objects, carry, steps)
     _contacts(model, r, objects, carry, robot_shape, shapes, steps)
-    _targets(model, r, objects, sym, geometry, scene, shapes, steps)
+    _targets(model, r, objects, sym, geometry, scene, shapes, steps, disabled)
     binaries = _collisions(model, r, objects, carry, robot_shape, shapes, scene, steps)
 
     _decide_first(model, sym, carry, steps)
@@ -149,12 +149,10 @@ def _contacts(model, r, objects, carry: Carry, robot_shape: Footprint, shapes, s
             implies_close(model, carry.attach[name][k], r[k], o[k], reach, f"touch_{name}_{k}")
 
 
-def _targets(model, r, objects, sym, geometry, scene, shapes, steps) -> None:
+def _targets(model, r, objects, sym, geometry, scene, shapes, steps, disabled) -> None:
     for i, g in enumerate(geometry):
-        if g.target is None or g.kind not in ("place", "push", "move"):
+        if g.target is None or g.kind not in ("place", "push", "move") or i in disabled:
             continue
-        if sym.d[1][i].getUbOriginal() < 0.5:
-            continue  # disabled
         if scene.has_region(g.target):
             region = scene.region(g.target)
             lo, hi = region.lower, region.upper
