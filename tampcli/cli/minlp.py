@@ -40,6 +40,9 @@ def add_arguments(p) -> None:
                         "that model; inner: inscribed, a relaxation (default outer)")
     p.add_argument("--warm-start", metavar="SOLUTION",
                    help="a solution.json (e.g. branch and bound's) to start SCIP from")
+    p.add_argument("--schedule", metavar="SOLUTION",
+                   help="a solution.json whose actions stay at its waypoints: optimize only "
+                        "the trajectory of that schedule")
     p.add_argument("--force", action="append", default=[], metavar="ACTION",
                    help="a ground action the plan must contain, e.g. \"(pick box start)\"")
     p.add_argument("--forbid", action="append", default=[], metavar="ACTION",
@@ -54,6 +57,7 @@ def options_from_args(args):
                             symbolic_weight=args.symbolic_weight, gap=args.gap,
                             polygon_sides=args.polygon_sides,
                             collision_model=args.collision_model, warm_start=args.warm_start,
+                            schedule=args.schedule,
                             forced=tuple(args.force), forbidden=tuple(args.forbid),
                             seed=args.seed)
     except ValueError as err:

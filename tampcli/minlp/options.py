@@ -27,6 +27,10 @@ class MinlpOptions:
         but whose solutions may graze a round body.
     warm_start: a solution.json (e.g. from branch and bound) given to SCIP as a partial
         solution to complete.
+    schedule: a solution.json whose actions (and push starts) are fixed at its waypoints,
+        scaled to T: only the trajectory for that sequence of decisions is left, the
+        lesson's V(d) of §2, solved globally (e.g. branch and bound's skeleton and its
+        waypoints per motion).
     forced: ground action names that must each appear in the plan (e.g. to optimize one
         skeleton of the lesson's push-versus-pick comparison).
     forbidden: ground action names that must not appear.
@@ -40,6 +44,7 @@ class MinlpOptions:
     polygon_sides: int = 16
     collision_model: str = "outer"
     warm_start: str | None = None
+    schedule: str | None = None
     forced: tuple[str, ...] = ()
     forbidden: tuple[str, ...] = ()
     seed: int = 0

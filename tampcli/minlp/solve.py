@@ -17,7 +17,7 @@ from tampcli.errors import InputError, SceneError
 from tampcli.minlp.extract import extract
 from tampcli.minlp.model import build
 from tampcli.minlp.options import MinlpOptions
-from tampcli.minlp.warm import add_warm_start
+from tampcli.minlp.warm import add_warm_start, fix_schedule
 from tampcli.solution import Solution
 
 
@@ -39,6 +39,7 @@ def solve_minlp(domain_path: str, problem_path: str, scene_path: str | None = No
     model.setParam("limits/gap", options.gap)
     model.setParam("randomization/randomseedshift", options.seed)
     warm = add_warm_start(built, task, options.warm_start) if options.warm_start else None
+    fixed = fix_schedule(built, task, options.schedule) if options.schedule else None
     seconds["build"] = time.perf_counter() - tic
 
     tic = time.perf_counter()
@@ -56,7 +57,7 @@ def solve_minlp(domain_path: str, problem_path: str, scene_path: str | None = No
              "nodes": model.getNTotalNodes(), "dual_bound": _finite(dual),
              "primal_bound": _finite(model.getPrimalbound()) if has_sol else None,
              "gap": _finite(model.getGap()) if has_sol else None,
-             "warm_start": warm, "seconds": {k: round(v, 4) for k, v in seconds.items()}}
+             "warm_start": warm, "schedule": fixed, "seconds": {k: round(v, 4) for k, v in seconds.items()}}
     common = dict(domain=domain_path, problem=problem_path, scene=prepared.scene_file,
                   modes=prepared.modes_file, robot=prepared.robot, stats=stats,
                   symbolic_weight=options.symbolic_weight, lower_bound=_finite(dual))

@@ -87,6 +87,19 @@ def test_a_warm_start_from_a_solution_file_is_taken(tmp_path):
     assert again.objective == pytest.approx(first.objective, rel=1e-4)
 
 
+def test_a_fixed_schedule_keeps_the_actions_where_the_file_has_them(tmp_path):
+    first = solve_minlp(*DUAL, options=MinlpOptions(steps=4, time_limit=60,
+                                                    forced=("(place a far)",)))
+    path = tmp_path / "far.solution.json"
+    write(first, path)
+    fixed = solve_minlp(*DUAL, options=MinlpOptions(steps=4, time_limit=60,
+                                                    schedule=str(path)))
+    assert fixed.plan == first.plan == ("(pick a ground)", "(place a far)")
+    assert [(p.action, p.start, p.end) for p in fixed.phases] == \
+        [(p.action, p.start, p.end) for p in first.phases]
+    assert fixed.objective == pytest.approx(first.objective, rel=1e-4)
+
+
 def test_a_forced_action_gives_the_other_skeleton():
     sol = solve_minlp(*DUAL, options=MinlpOptions(steps=4, time_limit=60,
                                                   forced=("(place a far)",)))
