@@ -17,6 +17,7 @@ LAYERS = (
     ("solution", "solution_read", "solution_fit"),
     ("optimize",),
     ("bnb",),
+    ("minlp",),
     ("render",),
     ("pipeline",),
     ("batch",),
