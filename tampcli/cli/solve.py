@@ -65,6 +65,13 @@ def add_parser(p) -> None:
                            metavar=flag.metavar, help=f"{flag.help} (default %(default)g)")
     p.add_argument("--out", metavar="FILE", help="write solution.json here (whatever the outcome)")
     p.add_argument("--video", metavar="FILE", help="render the solution to FILE (.mp4 or .gif)")
+    p.add_argument("--method", choices=sorted(METHODS), default="bnb",
+                   help="bnb: ranked skeletons x trajectory NLPs (any robot); minlp: the "
+                        "lesson's time-indexed MINLP solved to global optimality by SCIP "
+                        "(planar robot; docs/minlp.md) (default bnb)")
+    from tampcli.cli import minlp
+
+    minlp.add_arguments(p.add_argument_group("with --method minlp"))
 
 
 def options_from_args(args) -> SolveOptions:
@@ -82,6 +89,19 @@ def options_from_args(args) -> SolveOptions:
 
 
 def run(args, ui) -> int:
+    return METHODS[args.method](args, ui)
+
+
+def _run_minlp(args, ui) -> int:
+    from tampcli.cli import minlp
+
+    if args.video:
+        raise UsageError("--video is for --method bnb; render the --out file with "
+                         "`tampcli render`", "tampcli solve", key="--video")
+    return minlp.run(args, ui)
+
+
+def _run_bnb(args, ui) -> int:
     options = options_from_args(args)
     render_options = None
     if args.video:  # refuse a bad video path before minutes of solving
@@ -218,3 +238,6 @@ class _LiveView:
         for row in list(self.rows.values())[-15:]:
             table.add_row(*row)
         return table
+
+
+METHODS = {"bnb": _run_bnb, "minlp": _run_minlp}

@@ -13,7 +13,7 @@ the task's fact and action variables (symbolic.py) and the carry state
   the disk must also stay outside the object's footprint (collide.py), so it
   touches the object's side;
 - place and push end put the object's footprint inside the target region
-  (or its centre over the target body's top, within STACK_INSET); a move with
+  (or inside the target body's top face, as a stacked footprint); a move with
   `to` ends the disk over its target;
 - no collision along any segment: the disk against every body it is not
   carrying, and the carried object against every other body, except what
@@ -35,7 +35,7 @@ from tampcli.minlp.bigm import implies_close, implies_eq, implies_le
 from tampcli.minlp.collide import separate
 from tampcli.minlp.events import Carry, OpGeometry, encode_carry, infeasible_ops, op_geometry
 from tampcli.minlp.footprint import Footprint, body_footprint, overlaps_in_height, robot_footprint
-from tampcli.optimize.constraints import STACK_INSET
+from tampcli.minlp.push_cone import encode_push_cones
 
 
 @dataclass(frozen=True)
@@ -86,6 +86,7 @@ def build(task, scene, modes, lower, upper, start, options, forced=frozenset(),
     _motion(model, r, objects, carry, steps)
     _contacts(model, r, objects, carry, robot_shape, shapes, steps)
     _targets(model, r, objects, sym, geometry, scene, shapes, steps, disabled)
+    encode_push_cones(model, r, objects, carry, float(scene.robot.radius), shapes, steps)
     binaries = _collisions(model, r, objects, carry, robot_shape, shapes, scene, steps)
 
     _decide_first(model, sym, carry, steps)
@@ -157,13 +158,12 @@ def _targets(model, r, objects, sym, geometry, scene, shapes, steps, disabled) -
             region = scene.region(g.target)
             lo, hi = region.lower, region.upper
             ext = shapes[g.obj].extent if g.kind != "move" else (0.0, 0.0)
-        else:
+        else:  # a body's top face: the whole footprint on it, as optimize/stability.py
             body = scene.body(g.target)
-            inset = STACK_INSET if g.kind != "move" else 1.0
-            ext = (0.0, 0.0)
+            ext = shapes[g.obj].extent if g.kind != "move" else (0.0, 0.0)
             half = shapes[g.target].extent
-            lo = [body.pose[a] - inset * half[a] for a in range(2)]
-            hi = [body.pose[a] + inset * half[a] for a in range(2)]
+            lo = [body.pose[a] - half[a] for a in range(2)]
+            hi = [body.pose[a] + half[a] for a in range(2)]
         for k in range(1, steps + 1):
             point = r[k] if g.kind == "move" else objects[g.obj][k]
             for a in range(2):

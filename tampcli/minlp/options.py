@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from tampcli.bnb import DEFAULT_SYMBOLIC_WEIGHT
+from tampcli.bnb import BnBOptions
 
 COLLISION_MODELS = ("outer", "inner")
 
@@ -39,7 +39,7 @@ class MinlpOptions:
 
     steps: int = 8
     time_limit: float = 120.0
-    symbolic_weight: float = DEFAULT_SYMBOLIC_WEIGHT
+    symbolic_weight: float = BnBOptions.symbolic_weight  # the one default, bnb's
     gap: float = 1e-4
     polygon_sides: int = 16
     collision_model: str = "outer"

@@ -98,16 +98,19 @@ class Prepared:
 
 
 def prepare(domain_path, problem_path, scene_path, modes_path, options) -> Prepared:
+    from tampcli.geometry.collision import CollisionChecker
     from tampcli.geometry.locate import find_modes, find_scene
-    from tampcli.geometry.scene import load_modes, load_scene
+    from tampcli.geometry.scene import read_scene
+    from tampcli.geometry.startcheck import check_start_state
     from tampcli.geometry.world import World
     from tampcli.minlp.footprint import robot_footprint
     from tampcli.minlp.symbolic import check_supported
-    from tampcli.pddl import parser
+    from tampcli.optimize.modes import load_modes
+    from tampcli.pddl.load import load
     from tampcli.task.ground import ground
 
-    domain = parser.parse_domain_file(domain_path)
-    problem = parser.parse_problem_file(problem_path)
+    loaded = load(domain_path, problem_path)
+    domain, problem = loaded.domain, loaded.problem
     task = ground(domain, problem)
     check_supported(task, problem_path)
     scene_file = scene_path or find_scene(problem_path)
@@ -119,10 +122,10 @@ def prepare(domain_path, problem_path, scene_path, modes_path, options) -> Prepa
         raise SceneError("the problem has a scene but the domain has no modes.toml beside it "
                          "(or pass --modes)", domain_path)
     modes = load_modes(modes_file, domain)
-    scene = load_scene(str(scene_file), domain, problem, modes=modes, geometric=False)
+    scene, source = read_scene(str(scene_file), domain, problem, modes=modes)
     robot_footprint(scene, options.polygon_sides, True)  # a non-planar robot: refused here
-    scene = load_scene(str(scene_file), domain, problem, modes=modes)
     with World(scene) as world:
+        check_start_state(world, CollisionChecker(world), source)
         limits = (tuple(map(float, world.lower)), tuple(map(float, world.upper)),
                   tuple(map(float, world.start)))
         robot = {"model": scene.robot.model, "joints": list(world.joint_names),
