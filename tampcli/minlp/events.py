@@ -20,13 +20,24 @@ from dataclasses import dataclass
 from pyscipopt import quicksum
 
 from tampcli.optimize.bodies import REST_TOLERANCE
+from tampcli.optimize.kinds import KINDS
+from tampcli.optimize.kinds.grasp import Grasp
+from tampcli.optimize.kinds.move import Move
+from tampcli.optimize.kinds.none import Symbolic
+from tampcli.optimize.kinds.place import Place
+from tampcli.optimize.kinds.push import Push
+
+# What each mode kind is in the time-indexed model: a registry keyed by the kind's
+# type (a kind this model cannot express is refused by `op_geometry`).
+ATTACH, RELEASE, SLIDE, TRAVEL, IDLE = "attach", "release", "slide", "travel", "idle"
+ROLE_OF = {Grasp: ATTACH, Place: RELEASE, Push: SLIDE, Move: TRAVEL, Symbolic: IDLE}
 
 
 @dataclass(frozen=True)
 class OpGeometry:
-    kind: str  # grasp | place | push | move | none
+    role: str  # ATTACH (a grasp) | RELEASE (a place) | SLIDE (a push) | TRAVEL | IDLE
     obj: str | None = None
-    target: str | None = None  # place: `on`; push, move: `to`
+    target: str | None = None  # a release's `on`; a slide's or travel's `to`
 
 
 @dataclass(frozen=True)
@@ -49,8 +60,9 @@ def op_geometry(task, modes) -> tuple[OpGeometry, ...]:
         mode = modes.get_mode(op.action)
         roles = mode.bind(op.args) if mode.params else {"object": mode.object, "on": mode.on,
                                                          "to": mode.to}
-        target = roles["on"] if mode.kind == "place" else roles["to"]
-        out.append(OpGeometry(mode.kind, roles["object"], target))
+        role = ROLE_OF[type(KINDS[mode.kind])]
+        target = roles["on"] if role == RELEASE else roles["to"]
+        out.append(OpGeometry(role, roles["object"], target))
     return tuple(out)
 
 
@@ -60,9 +72,9 @@ def infeasible_ops(geometry, scene, footprints) -> frozenset[int]:
     movable = {b.name for b in scene.bodies if not b.fixed}
     out = set()
     for i, g in enumerate(geometry):
-        if g.kind in ("grasp", "place", "push") and g.obj not in movable:
+        if g.role in (ATTACH, RELEASE, SLIDE) and g.obj not in movable:
             out.add(i)
-        elif g.kind in ("place", "push") and g.target is not None:
+        elif g.role in (RELEASE, SLIDE) and g.target is not None:
             support = scene.region(g.target).on if scene.has_region(g.target) else g.target
             if not scene.has_body(support) or support == g.obj:
                 out.add(i)
@@ -76,9 +88,9 @@ def infeasible_ops(geometry, scene, footprints) -> frozenset[int]:
 def encode_carry(model, geometry, d, movable: list[str], steps: int) -> Carry:
     hold, push, start, attach, release = {}, {}, {}, {}, {}
     for o in movable:
-        grasps = [i for i, g in enumerate(geometry) if g.kind == "grasp" and g.obj == o]
-        places = [i for i, g in enumerate(geometry) if g.kind == "place" and g.obj == o]
-        pushes = [i for i, g in enumerate(geometry) if g.kind == "push" and g.obj == o]
+        grasps = [i for i, g in enumerate(geometry) if g.role == ATTACH and g.obj == o]
+        places = [i for i, g in enumerate(geometry) if g.role == RELEASE and g.obj == o]
+        pushes = [i for i, g in enumerate(geometry) if g.role == SLIDE and g.obj == o]
         h, p, s, att, rel = [0.0], [0.0], [0.0], [0.0], [0.0]
         for k in range(1, steps + 1):
             s.append(model.addVar(f"pstart_{o}_{k}", vtype="B",

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from tampcli.minlp.events import ATTACH, RELEASE, SLIDE, TRAVEL
 from tampcli.solution import Phase
 
 
@@ -90,17 +91,17 @@ def _phases(built, task, op_at, starts, steps) -> list[Phase]:
         if k in op_at:
             op = task.operators[op_at[k]]
             g = built.geometry[op_at[k]]
-            if g.kind == "push":
+            if g.role == SLIDE:
                 phases.append(Phase(op.name, push_from, k, g.obj))
                 last, holding = k, None
-            elif g.kind == "move":
+            elif g.role == TRAVEL:
                 phases.append(Phase(op.name, last, k, holding))
                 last = k
             else:
                 motion_to(k)
-                if g.kind == "grasp":
+                if g.role == ATTACH:
                     holding = g.obj
-                elif g.kind == "place":
+                elif g.role == RELEASE:
                     holding = None
                 phases.append(Phase(op.name, k, k, holding))
         if k in starts:

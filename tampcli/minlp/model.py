@@ -33,7 +33,16 @@ from pyscipopt import Model, quicksum
 from tampcli.minlp import symbolic
 from tampcli.minlp.bigm import implies_close, implies_eq, implies_le
 from tampcli.minlp.collide import separate
-from tampcli.minlp.events import Carry, OpGeometry, encode_carry, infeasible_ops, op_geometry
+from tampcli.minlp.events import (
+    RELEASE,
+    SLIDE,
+    TRAVEL,
+    Carry,
+    OpGeometry,
+    encode_carry,
+    infeasible_ops,
+    op_geometry,
+)
 from tampcli.minlp.footprint import Footprint, body_footprint, overlaps_in_height, robot_footprint
 from tampcli.minlp.push_cone import encode_push_cones
 
@@ -152,20 +161,20 @@ def _contacts(model, r, objects, carry: Carry, robot_shape: Footprint, shapes, s
 
 def _targets(model, r, objects, sym, geometry, scene, shapes, steps, disabled) -> None:
     for i, g in enumerate(geometry):
-        if g.target is None or g.kind not in ("place", "push", "move") or i in disabled:
+        if g.target is None or g.role not in (RELEASE, SLIDE, TRAVEL) or i in disabled:
             continue
         if scene.has_region(g.target):
             region = scene.region(g.target)
             lo, hi = region.lower, region.upper
-            ext = shapes[g.obj].extent if g.kind != "move" else (0.0, 0.0)
+            ext = shapes[g.obj].extent if g.role != TRAVEL else (0.0, 0.0)
         else:  # a body's top face: the whole footprint on it, as optimize/stability.py
             body = scene.body(g.target)
-            ext = shapes[g.obj].extent if g.kind != "move" else (0.0, 0.0)
+            ext = shapes[g.obj].extent if g.role != TRAVEL else (0.0, 0.0)
             half = shapes[g.target].extent
             lo = [body.pose[a] - half[a] for a in range(2)]
             hi = [body.pose[a] + half[a] for a in range(2)]
         for k in range(1, steps + 1):
-            point = r[k] if g.kind == "move" else objects[g.obj][k]
+            point = r[k] if g.role == TRAVEL else objects[g.obj][k]
             for a in range(2):
                 implies_le(model, sym.d[k][i], [(1.0, point[a])], hi[a] - ext[a],
                            f"in_{i}_{k}_{a}_hi")

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from tampcli.minlp.events import SLIDE
 from tampcli.solution_read import read_solution
 
 
@@ -44,7 +45,7 @@ def read_schedule(built, task, path: str) -> Schedule | str:
             return f"{name} is not a ground action of the task"
         i = index[name]
         k = at(phase.end)
-        if built.geometry[i].kind == "push":
+        if built.geometry[i].role == SLIDE:
             starts[at(phase.start)] = built.geometry[i].obj
         if k in events:
             return f"two actions fall on waypoint {k} of {steps}"

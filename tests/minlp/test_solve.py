@@ -29,12 +29,14 @@ def test_a_small_model_is_solved_to_proved_optimality():
     sol = solve_minlp(*PUSH, options=MinlpOptions(steps=3, time_limit=60))
     assert sol.status == "solved"
     assert sol.stats["scip_status"] == "optimal"
-    assert sol.plan == ("(push box start goal table)",)
+    # Pushing the box round the obstacle would be a drag (outside the friction cone of
+    # every face): pick and place it is.
+    assert sol.plan == ("(pick box start)", "(place box goal)")
     assert sol.lower_bound == pytest.approx(sol.objective, rel=1e-4)
     # The objective is exactly tampcli's: squared displacements + w * symbolic cost.
     steps = zip(sol.trajectory, sol.trajectory[1:], strict=False)
     moved = sum((b[0] - a[0]) ** 2 + (b[1] - a[1]) ** 2 for a, b in steps)
-    assert sol.objective == pytest.approx(moved + 0.1 * 2.0)
+    assert sol.objective == pytest.approx(moved + 0.1 * 4.0)
     assert len(sol.trajectory) == 4
 
 
@@ -67,9 +69,9 @@ def test_the_solution_on_planar_push_p01_at_8_steps_validates(minlp_cli, cli, tm
                     "--out", out)
     assert run.code == 0, run.err
     data = json.loads(out.read_text())
-    # Within a few seconds SCIP may still hold the costlier skeleton: both must validate.
-    assert data["plan"] in (["(push box start goal table)"],
-                            ["(pick box start)", "(place box goal)"])
+    # Within a few seconds SCIP may still hold a costlier incumbent: whatever it is, it
+    # must validate.
+    assert data["plan"][:2] == ["(pick box start)", "(place box goal)"]
     assert len(data["trajectory"]) == 9
     assert data["lower_bound"] <= data["objective"] + 1e-9
     check = cli("validate", *PUSH, out)
