@@ -29,106 +29,32 @@ Bounds, honestly labelled:
 from __future__ import annotations
 
 import time
-from collections.abc import Callable, Iterable, Sequence
-from dataclasses import dataclass, field
-from typing import Any, Protocol
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from typing import Any
 
 from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
-from tampcli.errors import require_int, require_number
+from tampcli.bnb.values import (
+    BnBOptions,
+    BnBResult,
+    Evaluate,
+    Event,
+    SkeletonSource,
+    StageResult,
+)
 from tampcli.solution import SkeletonRecord
+
+__all__ = ["BnBOptions", "BnBResult", "Evaluate", "Event", "SkeletonSource", "StageResult",
+           "branch_and_bound"]
 
 STAGES = ("final", "keyframes", "path")
 TIE = 1e-12  # objectives this close count as equal when the symbolic bound is compared
 
 
-@dataclass(frozen=True)
-class BnBOptions:
-    """Options of the skeleton search (checked when built).
-
-    max_skeletons: skeletons drawn at most (a count, `-k`).
-    time_limit: seconds for the whole search, drawing skeletons included (checked
-        between NLP solves); infinity is no limit.
-    symbolic_weight: w (>= 0) in objective = trajectory cost (rad^2 or m^2) + w * symbolic
-        cost; the default 0.1 makes ten unit-cost actions weigh as much as one rad^2 of
-        motion: a tie-breaker towards shorter plans that rarely overrides geometry.
-    anytime: keep improving until a limit instead of stopping at the first solution
-        whose optimality cannot be improved by a cheaper skeleton.
-    prefix_pruning: when a skeleton's keyframe problem fails, find its shortest failing
-        prefix and forbid every skeleton that starts with it.
-    first: stop at the first feasible skeleton (its solution verified), without
-        looking for a better one.
-    """
-
-    max_skeletons: int = 20
-    time_limit: float = 120.0
-    symbolic_weight: float = 0.1
-    anytime: bool = False
-    prefix_pruning: bool = True
-    first: bool = False
-
-    def __post_init__(self):
-        require_int(self.max_skeletons, "max_skeletons", 1)
-        require_number(self.time_limit, "time_limit", positive=True, unit="s", finite=False)
-        require_number(self.symbolic_weight, "symbolic_weight")
-
-
-class StageResult(Protocol):
-    status: str  # "solved" | "infeasible" | "limit"
-    cost: float | None
-    worst_constraint: str | None
-
-
-class SkeletonSource(Protocol):
-    """What branch and bound needs of the top-k generator.
-
-    Optional, used when present: `solved(names)` hears of each feasible
-    skeleton; `lower_bound()` is a proved bound on the symbolic cost of every
-    skeleton not yet drawn (needed when the source does not draw skeletons
-    in non-decreasing cost, as one that learns from failures does)."""
-
-    def __iter__(self): ...
-
-    def forbid_prefix(self, names: tuple[str, ...]) -> None: ...
-
-
-Evaluate = Callable[[Sequence[Any], str, Any], StageResult]
-
-
-@dataclass
-class Event:
-    """One step of the search, for live displays."""
-
-    kind: str  # "skeleton" | "stage" | "outcome" | "incumbent" | "stop"
-    rank: int
-    plan: tuple[str, ...] = ()
-    symbolic_cost: float | None = None
-    stage: str | None = None
-    outcome: str | None = None
-    cost: float | None = None
-    bound: float | None = None
-    seconds: float = 0.0
-    message: str | None = None
-
-
-@dataclass
-class BnBResult:
-    status: str  # "solved" | "unsolvable" | "limit"
-    reason: str | None
-    best: Any  # the path-stage result of the incumbent, or None
-    best_plan: tuple[Any, ...] = ()
-    best_symbolic_cost: float | None = None
-    best_objective: float | None = None
-    lower_bound: float | None = None
-    optimal: bool = False
-    skeletons: list[SkeletonRecord] = field(default_factory=list)
-    stats: dict = field(default_factory=dict)
-    improvements: list[tuple[float, float]] = field(default_factory=list)  # (seconds, objective)
-
-
 def branch_and_bound(
     skeletons: SkeletonSource | Iterable,
     evaluate: Evaluate,
-    options: BnBOptions = BnBOptions(),
+    options: BnBOptions | None = None,
     is_geometric: Callable[[Any], bool] = lambda op: True,
     on_event: Callable[[Event], None] | None = None,
     clock: Callable[[], float] = time.perf_counter,
@@ -142,7 +68,8 @@ def branch_and_bound(
     stage (or of a prefix's keyframes), passed through untouched. `learn(result)`
     hears of every stage that failed (what geometry found in the way).
     """
-    search = _Search(skeletons, evaluate, options, is_geometric, on_event, clock, learn)
+    search = _Search(skeletons, evaluate, options or BnBOptions(), is_geometric, on_event,
+                     clock, learn)
     return search.run()
 
 

@@ -1,0 +1,95 @@
+"""The values branch and bound takes and gives: options, the skeleton source's
+protocol, events for live displays, the result."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+from tampcli.errors import require_int, require_number
+from tampcli.solution import SkeletonRecord
+
+
+@dataclass(frozen=True)
+class BnBOptions:
+    """Options of the skeleton search (checked when built).
+
+    max_skeletons: skeletons drawn at most (a count, `-k`).
+    time_limit: seconds for the whole search, drawing skeletons included (checked
+        between NLP solves); infinity is no limit.
+    symbolic_weight: w (>= 0) in objective = trajectory cost (rad^2 or m^2) + w * symbolic
+        cost; the default 0.1 makes ten unit-cost actions weigh as much as one rad^2 of
+        motion: a tie-breaker towards shorter plans that rarely overrides geometry.
+    anytime: keep improving until a limit instead of stopping at the first solution
+        whose optimality cannot be improved by a cheaper skeleton.
+    prefix_pruning: when a skeleton's keyframe problem fails, find its shortest failing
+        prefix and forbid every skeleton that starts with it.
+    first: stop at the first feasible skeleton (its solution verified), without
+        looking for a better one.
+    """
+
+    max_skeletons: int = 20
+    time_limit: float = 120.0
+    symbolic_weight: float = 0.1
+    anytime: bool = False
+    prefix_pruning: bool = True
+    first: bool = False
+
+    def __post_init__(self):
+        require_int(self.max_skeletons, "max_skeletons", 1)
+        require_number(self.time_limit, "time_limit", positive=True, unit="s", finite=False)
+        require_number(self.symbolic_weight, "symbolic_weight")
+
+
+class StageResult(Protocol):
+    status: str  # "solved" | "infeasible" | "limit"
+    cost: float | None
+    worst_constraint: str | None
+
+
+class SkeletonSource(Protocol):
+    """What branch and bound needs of the top-k generator.
+
+    Optional, used when present: `solved(names)` hears of each feasible
+    skeleton; `lower_bound()` is a proved bound on the symbolic cost of every
+    skeleton not yet drawn (needed when the source does not draw skeletons
+    in non-decreasing cost, as one that learns from failures does)."""
+
+    def __iter__(self): ...
+
+    def forbid_prefix(self, names: tuple[str, ...]) -> None: ...
+
+
+Evaluate = Callable[[Sequence[Any], str, Any], StageResult]
+
+
+@dataclass
+class Event:
+    """One step of the search, for live displays."""
+
+    kind: str  # "skeleton" | "stage" | "outcome" | "incumbent" | "stop"
+    rank: int
+    plan: tuple[str, ...] = ()
+    symbolic_cost: float | None = None
+    stage: str | None = None
+    outcome: str | None = None
+    cost: float | None = None
+    bound: float | None = None
+    seconds: float = 0.0
+    message: str | None = None
+
+
+@dataclass
+class BnBResult:
+    status: str  # "solved" | "unsolvable" | "limit"
+    reason: str | None
+    best: Any  # the path-stage result of the incumbent, or None
+    best_plan: tuple[Any, ...] = ()
+    best_symbolic_cost: float | None = None
+    best_objective: float | None = None
+    lower_bound: float | None = None
+    optimal: bool = False
+    skeletons: list[SkeletonRecord] = field(default_factory=list)
+    stats: dict = field(default_factory=dict)
+    improvements: list[tuple[float, float]] = field(default_factory=list)  # (seconds, objective)
