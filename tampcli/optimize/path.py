@@ -15,7 +15,15 @@ import numpy as np
 
 from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import REST_TOLERANCE
-from tampcli.optimize.collide import Held, body_matrices, contact_rows, held_spec, row_keys
+from tampcli.optimize.collide import (
+    TOUCH_DEPTH,
+    Held,
+    body_matrices,
+    contact_key,
+    contact_rows,
+    held_spec,
+    row_keys,
+)
 from tampcli.optimize.expr import PoseX, held_posex
 from tampcli.optimize.grips import held_pose
 from tampcli.optimize.layout import Layout, waypoint_block
@@ -47,14 +55,15 @@ def samples(T: int, checks: int):
 
 def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: Held | None,
                   moved: dict, kin, checker, T: int, checks: int, rest_z: float | None,
-                  label: str, keep=None):
+                  label: str, keep=None, margin: float | None = None):
     """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed).
 
     `keep(tau) -> bool` selects the sample points that get collision rows
     (all when None). `rest_z`: the height a pushed object keeps (None: nothing
-    is pushed).
+    is pushed). `margin`: the clearance kept (the options' when None).
     """
     opts = problem.options
+    margin = opts.margin if margin is None else margin
     layout = phase_layout(problem, T)
     poses = {name: pose_of_matrix(t) for name, t in moved.items()}
     keys = row_keys(list(problem.bodies), m.sliding, held)
@@ -64,7 +73,8 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     def block(i):
         return waypoint_block(i) if 0 < i < T else None
 
-    ignores = [allowed_contacts(m, tau, T) for tau, _, _ in pts]
+    ignores = [allowed_contacts(m)] * len(pts)
+    touches = [touching(m, tau, T) for tau, _, _ in pts]
     weights = [[(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
                 if b is not None and wgt > 0] for _, i, s in pts]
     where = np.array([i for _, i, _ in pts], dtype=int)
@@ -82,10 +92,10 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
             rows.cost_grad[waypoint_block(i)] = 2.0 * (d[i - 1] - d[i])
         samples_q = (1 - frac) * qs[where] + frac * qs[where + 1]
         contacts = checker.distances_many(samples_q, matrices, spec, ignores, opts.activation)
-        for q, found, wts in zip(samples_q, contacts, weights, strict=True):
+        for q, found, wts, touch in zip(samples_q, contacts, weights, touches, strict=True):
             frame = kin.frame(q) if held is not None and held.t_block else None
             contact_rows(rows.ineq, label, found, wts, frame, held, poses, keys,
-                         opts.activation, opts.margin)
+                         opts.activation, margin, touch)
         if rest_z is not None and not problem.planar:
             for i in range(1, T):
                 frame = kin.frame(qs[i])
@@ -97,28 +107,38 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     return evaluate, layout
 
 
-def allowed_contacts(m: MotionPhase, tau: float, T: int) -> frozenset[str]:
-    """What a sample at position tau of motion m may touch: what it slides along, and
-    the contacts it leaves in its first segment or enters in its last."""
-    ignore = set(m.sliding)
+def allowed_contacts(m: MotionPhase) -> frozenset[str]:
+    """What motion m may go into: only what it slides along (resting contact)."""
+    return frozenset(m.sliding)
+
+
+def touching(m: MotionPhase, tau: float, T: int) -> frozenset[str]:
+    """What a sample at position tau of motion m may touch, not penetrate: the
+    contacts it leaves in its first segment or enters in its last."""
+    touch = set()
     if tau < 1:
-        ignore |= m.leave_contact
+        touch |= m.leave_contact
     if tau > T - 1:
-        ignore |= m.enter_contact
-    return frozenset(ignore)
+        touch |= m.enter_contact
+    return frozenset(touch)
 
 
 def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker, T, checks,
-                     horizon: float) -> dict[float, float]:
-    """tau -> smallest distance at that sample (capped at `horizon`), ignoring as the rows do."""
+                     margin: float, horizon: float) -> dict[float, float]:
+    """tau -> least slack over the sample's contacts (distance less the margin the rows
+    keep for that contact: -TOUCH_DEPTH for one being touched), capped at `horizon`."""
     w = np.asarray(x).reshape(T - 1, problem.n)
     qs = np.vstack([q_a, w, q_b])
     pts = samples(T, checks)
     samples_q = np.array([(1 - s) * qs[i] + s * qs[i + 1] for _, i, s in pts])
     contacts = checker.distances_many(samples_q, moved, held_spec(held),
-                                      [allowed_contacts(m, tau, T) for tau, _, _ in pts], horizon)
-    return {tau: min((c.distance for c in found), default=horizon)
-            for (tau, _, _), found in zip(pts, contacts, strict=True)}
+                                      [allowed_contacts(m)] * len(pts), horizon + margin)
+    out = {}
+    for (tau, _, _), found in zip(pts, contacts, strict=True):
+        touch = touching(m, tau, T)
+        out[tau] = min((c.distance - (-TOUCH_DEPTH if contact_key(c) in touch else margin)
+                        for c in found), default=horizon)
+    return out
 
 
 def via_points(problem: TrajectoryProblem, q_a, q_b, T: int, held_height: float, moved: dict,
