@@ -15,16 +15,14 @@ import time
 
 import numpy as np
 
-from tampcli.geometry.sampled_path import SamplingOptions, resample, sampled_path
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
-from tampcli.optimize.collide import held_spec
 from tampcli.optimize.grips import Kinematics
 from tampcli.optimize.init import final_guess, keyframe_guess
 from tampcli.optimize.layout import keyframe_block
-from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, solve_nlp
+from tampcli.optimize.motion import solve_motion
+from tampcli.optimize.nlp import FEASIBILITY, solve_nlp, violation_at
 from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.path import allowed_contacts, phase_rows_fn, sample_clearance, via_points
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import STAGES, TrajectoryResult
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
@@ -32,8 +30,6 @@ from tampcli.optimize.values import Keyframes, placement_blocks, placements_from
 from tampcli.optimize.world_state import reach_of
 
 GRIP_BOUND = 4 * math.pi
-LAZY_BAND = 0.01  # m: a point between waypoints this close to violating gets its rows
-LAZY_ROUNDS = 3
 RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
 
 
@@ -210,6 +206,8 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
         if out.status == "solved" or time.perf_counter() > run.deadline:
             break
     out, choices = best
+    if out.status != "solved" and time.perf_counter() < run.deadline:
+        out = _tight_keyframes(run, layout, bounds, out, choices)
     kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
     T = problem.options.waypoints
     qs = [run.start, *kf.q]
@@ -225,6 +223,26 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
     return run.result("solved", cost=out.cost, phase_costs=phase_costs,
                       violation=out.violation, kkt_residual=out.kkt, keyframes=kf,
                       choices=choices, placements=placements)
+
+
+def _tight_keyframes(run: _Run, layout, bounds, out, choices):
+    """The keyframe NLP again with `tight_margin`, from where it failed, when the
+    margin is part of what it violates there (a slot narrower than twice the
+    margin); else, or when that fails too, `out`."""
+    problem = run.problem
+    opts = problem.options
+    if opts.tight_margin >= opts.margin:
+        return out
+    tight = dataclasses.replace(problem, options=dataclasses.replace(
+        opts, margin=opts.tight_margin))
+
+    def evaluate(x):
+        return keyframe_rows(tight, layout.unpack(x), choices, run.kin, run.checker, run.start)
+
+    if violation_at(evaluate, layout, out.x) >= out.violation - FEASIBILITY:
+        return out
+    retry = run.nlp(evaluate, layout, out.x, bounds)
+    return retry if retry.status == "solved" or retry.violation < out.violation else out
 
 
 # ---------------------------------------------------------------- path
@@ -253,7 +271,7 @@ def _path(run: _Run, warm) -> TrajectoryResult:
         for ctx in contexts:
             if attempt and ctx.index not in failing:
                 continue
-            out = _solve_motion(run, ctx, T, checks)
+            out = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index))
             if out.status != "solved":
                 label = _phase_label(problem, ctx.index)
                 return run.result(out.status, violation=out.violation,
@@ -289,94 +307,3 @@ def _phase_costs(traj, T, K):
 
 def _phase_label(problem, k) -> str:
     return f"motion {k} before {problem.step_of_keyframe(k).name}"
-
-
-def _solve_motion(run: _Run, ctx, T, checks):
-    """One motion's path NLP under the margin schedule.
-
-    From the via-point start with the options' margin; where that fails, from
-    a sampled path (RRT-Connect over the same collision model, which finds
-    passages the NLP's gradients cannot: pushed against both walls at once it
-    stalls), first with the margin, then with `tight_margin`, so a passage
-    narrower than twice the margin is still passed. The zero-margin check at
-    10x (`verify`) judges what comes out. Returns the first solved outcome, or
-    the last failure.
-    """
-    problem = run.problem
-    opts = problem.options
-    held_height = 0.0
-    if ctx.held is not None:
-        held_height = 2 * problem.bodies[ctx.held.name].half[2]
-    x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved, run.rng).reshape(-1)
-    out = _solve_phase(run, ctx, T, checks, x0, opts.margin)
-    if out.status == "solved" or time.perf_counter() > run.deadline:
-        return out
-    sampled = _sampled_start(run, ctx, T)
-    tries = [(sampled, opts.margin), (sampled, opts.tight_margin)] if sampled is not None \
-        else [(x0, opts.tight_margin)]
-    for start, margin in tries:
-        out = _solve_phase(run, ctx, T, checks, start, margin)
-        if out.status == "solved" or time.perf_counter() > run.deadline:
-            return out
-    return out
-
-
-def _sampled_start(run: _Run, ctx, T):
-    """(T-1) * n interior waypoints resampled from a sampled path, or None."""
-    problem = run.problem
-    opts = problem.options
-    budget = min(opts.sampling_time, run.deadline - time.perf_counter())
-    if budget <= 0:
-        return None
-    world = problem.world
-    m = problem.motions[ctx.index]
-    options = SamplingOptions(time_limit=budget, simplify_time=min(0.5, budget / 4),
-                              clearance=opts.tight_margin)
-    path = sampled_path(run.checker, ctx.q_a, ctx.q_b, world.lower, world.upper,
-                        body_poses=ctx.moved, held=held_spec(ctx.held),
-                        ignore=allowed_contacts(m), options=options)
-    if path is None:
-        return None
-    return resample(path, T + 1)[1:-1].reshape(-1)
-
-
-def _solve_phase(run: _Run, ctx, T, checks, x0, margin: float):
-    """Coarse (waypoints only), then lazily add the points between waypoints that need it.
-
-    The rows of a point between waypoints are added once it comes within
-    LAZY_BAND of its limit (most never do: a collision query per point per
-    evaluation is what the path NLP spends its time on); each round checks
-    every point and adds the new offenders, so the answer is feasible at every
-    sample point or reported as not.
-    """
-    problem = run.problem
-    m = problem.motions[ctx.index]
-    label = _phase_label(problem, ctx.index)
-
-    def rows(n_checks, keep=None):
-        return phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
-                             run.checker, T, n_checks, ctx.rest_z, label, keep, margin)
-
-    bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
-                      strict=True))
-    coarse, layout = rows(0)
-    out = run.nlp(coarse, layout, x0, bounds)
-    if checks == 0:
-        return out
-    kept: set[float] = set()
-    for _ in range(LAZY_ROUNDS):
-        if out.status != "solved":
-            return out
-        slack = sample_clearance(problem, m, ctx.q_a, ctx.q_b, out.x, ctx.held, ctx.moved,
-                                 run.checker, T, checks, margin, LAZY_BAND)
-        if min(slack.values()) >= -FEASIBILITY:
-            # Same cost, more constraints: an optimum with fewer rows that satisfies
-            # all of them is an optimum of the full NLP.
-            return out
-        kept |= {tau for tau, d in slack.items() if d < LAZY_BAND}
-        lazy, _ = rows(checks, lambda tau, kept=frozenset(kept): tau == int(tau) or tau in kept)
-        out = run.nlp(lazy, layout, out.x, bounds)
-    full, _ = rows(checks)
-    if out.status != "solved" or nlp_feasible(full, layout, out.x):
-        return out
-    return run.nlp(full, layout, out.x, bounds)
