@@ -31,6 +31,10 @@ from tampcli.optimize.world_state import reach_of
 
 GRIP_BOUND = 4 * math.pi
 RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
+# Path solves per skeleton that `verify` judges: each round after the first samples the
+# failing motions twice as finely (3, 7, 15 points a segment by default); a motion that
+# ends in a narrow slot can dip into a wall between 7.
+VERIFY_ROUNDS = 3
 
 
 class _Run:
@@ -267,7 +271,7 @@ def _path(run: _Run, warm) -> TrajectoryResult:
     waypoints, kkts = {}, []
     checks = opts.interpolation_checks
     failing: set[int] = set()
-    for attempt in range(2):
+    for attempt in range(VERIFY_ROUNDS):
         for ctx in contexts:
             if attempt and ctx.index not in failing:
                 continue
@@ -289,7 +293,7 @@ def _path(run: _Run, warm) -> TrajectoryResult:
         problems = verify_mod.verify(problem, result)
         if not problems:
             return result
-        # A collision between the sample points: sample the failing phases finer once.
+        # A collision between the sample points: sample the failing phases finer.
         failing.clear()
         failing.update({i for i, _ in verify_mod.failing_motions(problem, result)}
                        or range(problem.n_keyframes))
