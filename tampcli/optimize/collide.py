@@ -63,15 +63,15 @@ def held_spec(held: Held | None):
 
 def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | None,
                  held: Held | None, poses: dict[str, PoseX], keys: list[str],
-                 activation: float, margin: float, touching: frozenset[str] = frozenset()
+                 activation: float, margin: float, margins: dict[str, float] | None = None
                  ) -> None:
     """Add len(keys) rows for configuration q = sum of weights * blocks (see module doc),
     from the contacts the checker found at q.
 
     `q_weights`: [(block, weight)] whose weighted sum is q (one block at a keyframe;
     two at a point between waypoints). `poses`: bodies not at their start pose.
-    `touching`: bodies that may touch here (a contact being entered or left): their
-    rows keep -TOUCH_DEPTH instead of the margin.
+    `margins`: a key's own margin where it is not `margin` (-TOUCH_DEPTH for a
+    contact being entered or left: touching).
     """
     best: dict[str, object] = {}
     for c in contacts:
@@ -79,7 +79,8 @@ def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | No
         if k in best and best[k].distance <= c.distance:
             continue
         best[k] = c
-    margins = np.array([-TOUCH_DEPTH if k in touching else margin for k in keys])
+    own = margins or {}
+    margins = np.array([own.get(k, margin) for k in keys])
     values = activation - margins
     labels = [Label(step, "clearance", "m")] * len(keys)
     jac: dict[str, np.ndarray] = {}

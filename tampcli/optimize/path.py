@@ -24,12 +24,14 @@ from tampcli.optimize.collide import (
     held_spec,
     row_keys,
 )
-from tampcli.optimize.expr import PoseX, held_posex
+from tampcli.optimize.expr import Label, PoseX, held_posex
 from tampcli.optimize.grips import held_pose
 from tampcli.optimize.layout import Layout, waypoint_block
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.skeleton import MotionPhase
 from tampcli.optimize.stages import Rows
+
+STEP_RATIO = 2.0  # longest segment of a motion over its root-mean-square step
 
 
 def pose_of_matrix(t) -> PoseX:
@@ -55,12 +57,14 @@ def samples(T: int, checks: int):
 
 def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: Held | None,
                   moved: dict, kin, checker, T: int, checks: int, rest_z: float | None,
-                  label: str, keep=None, margin: float | None = None):
+                  label: str, keep=None, margin: float | None = None,
+                  near: dict[str, float] | None = None):
     """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed).
 
     `keep(tau) -> bool` selects the sample points that get collision rows
     (all when None). `rest_z`: the height a pushed object keeps (None: nothing
-    is pushed). `margin`: the clearance kept (the options' when None).
+    is pushed). `margin`: the clearance kept (the options' when None); `near`:
+    a smaller one for some keys (`near_ends`).
     """
     opts = problem.options
     margin = opts.margin if margin is None else margin
@@ -74,7 +78,7 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         return waypoint_block(i) if 0 < i < T else None
 
     ignores = [allowed_contacts(m)] * len(pts)
-    touches = [touching(m, tau, T) for tau, _, _ in pts]
+    margins = [sample_margins(m, tau, T, near) for tau, _, _ in pts]
     weights = [[(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
                 if b is not None and wgt > 0] for _, i, s in pts]
     where = np.array([i for _, i, _ in pts], dtype=int)
@@ -90,12 +94,13 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         rows.cost = float(np.sum(d * d))
         for i in range(1, T):
             rows.cost_grad[waypoint_block(i)] = 2.0 * (d[i - 1] - d[i])
+        _step_rows(rows, d, T, label)
         samples_q = (1 - frac) * qs[where] + frac * qs[where + 1]
         contacts = checker.distances_many(samples_q, matrices, spec, ignores, opts.activation)
-        for q, found, wts, touch in zip(samples_q, contacts, weights, touches, strict=True):
+        for q, found, wts, own in zip(samples_q, contacts, weights, margins, strict=True):
             frame = kin.frame(q) if held is not None and held.t_block else None
             contact_rows(rows.ineq, label, found, wts, frame, held, poses, keys,
-                         opts.activation, margin, touch)
+                         opts.activation, margin, own)
         if rest_z is not None and not problem.planar:
             for i in range(1, T):
                 frame = kin.frame(qs[i])
@@ -105,6 +110,28 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         return rows
 
     return evaluate, layout
+
+
+def _step_rows(rows: Rows, d: np.ndarray, T: int, label: str) -> None:
+    """|d_i|^2 <= STEP_RATIO^2 * mean |d_j|^2 for each of the T segments.
+
+    Collision rows hold at sample points only: without these rows the NLP
+    makes the segment that crosses a wall as long as it takes for its sample
+    points to land on either side (measured: a Panda's last segment 8 times
+    the others, through a slot's wall between every 16th point).
+    """
+    sq = np.sum(d * d, axis=1)
+    c = STEP_RATIO ** 2 / T
+    values = c * np.sum(sq) - sq
+    dS = {i: 2.0 * (d[i - 1] - d[i]) for i in range(1, T)}  # d sum |d|^2 / d q_i
+    jac = {}
+    for i in range(1, T):
+        J = np.outer(np.full(T, c), dS[i])
+        J[i - 1] -= 2.0 * d[i - 1]  # d |d_{i-1}|^2 / d q_i
+        J[i] += 2.0 * d[i]  # d |d_i|^2 / d q_i
+        jac[waypoint_block(i)] = J
+    rows.ineq.add(values, jac, Label(label, f"a segment longer than {STEP_RATIO:g} times "
+                                     "the mean step", ""))
 
 
 def allowed_contacts(m: MotionPhase) -> frozenset[str]:
@@ -123,10 +150,34 @@ def touching(m: MotionPhase, tau: float, T: int) -> frozenset[str]:
     return frozenset(touch)
 
 
+def sample_margins(m: MotionPhase, tau: float, T: int, near: dict[str, float] | None
+                   ) -> dict[str, float]:
+    """The keys whose margin at tau is not the motion's: `near`'s, and -TOUCH_DEPTH
+    for the contacts being touched there."""
+    out = dict(near or {})
+    out.update(dict.fromkeys(touching(m, tau, T), -TOUCH_DEPTH))
+    return out
+
+
+def near_ends(checker, m: MotionPhase, q_a, q_b, held, moved, margin: float, tight: float
+              ) -> dict[str, float]:
+    """key -> `tight` for what is closer than `margin` at either keyframe (other than
+    the contacts the motion enters or leaves): a slot the keyframe NLP could only
+    fill with the tight margin. Held to the margin there, the samples near the
+    keyframe could not be feasible, and the NLP would make the last segment as
+    long as it takes for them to land outside the slot."""
+    ends = m.enter_contact | m.leave_contact
+    found = checker.distances_many(np.array([q_a, q_b]), moved, held_spec(held),
+                                   [allowed_contacts(m)] * 2, margin)
+    return {k: tight for cs in found for c in cs
+            if c.distance < margin and (k := contact_key(c)) not in ends}
+
+
 def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker, T, checks,
-                     margin: float, horizon: float) -> dict[float, float]:
+                     margin: float, horizon: float, near: dict[str, float] | None = None
+                     ) -> dict[float, float]:
     """tau -> least slack over the sample's contacts (distance less the margin the rows
-    keep for that contact: -TOUCH_DEPTH for one being touched), capped at `horizon`."""
+    keep for that contact), capped at `horizon`."""
     w = np.asarray(x).reshape(T - 1, problem.n)
     qs = np.vstack([q_a, w, q_b])
     pts = samples(T, checks)
@@ -135,9 +186,9 @@ def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker,
                                       [allowed_contacts(m)] * len(pts), horizon + margin)
     out = {}
     for (tau, _, _), found in zip(pts, contacts, strict=True):
-        touch = touching(m, tau, T)
-        out[tau] = min((c.distance - (-TOUCH_DEPTH if contact_key(c) in touch else margin)
-                        for c in found), default=horizon)
+        own = sample_margins(m, tau, T, near)
+        out[tau] = min((c.distance - own.get(contact_key(c), margin) for c in found),
+                       default=horizon)
     return out
 
 
