@@ -184,3 +184,22 @@ def test_verify_reports_a_retreat_through_the_object_just_placed(planar):
     traj[retreat.start + 1] = 2 * centre - start
     found = verify(problem, dataclasses.replace(result, trajectory=traj))
     assert any("collision planar_body vs o" in p for p in found), found
+
+
+def test_verify_reports_a_suction_grip_inside_the_disk(planar):
+    """The planar robot holds its object against its rim: the collision model leaves
+    the held object against the tool out, so verify measures that contact itself
+    (the checker found the disk 8 mm inside planar-tamp p01's block)."""
+    scene, modes, world = planar
+    problem = lower(ops("(pick o start)", "(place o goal)"), scene, modes, world)
+    result = solve(problem, "path")
+    assert result.solved and verify(problem, result) == []
+    carry = _carry(result, "o")
+    traj = np.asarray(result.trajectory)
+    poses = {k: [list(p) for p in v] for k, v in result.object_poses.items()}
+    for i in (carry, carry + 1):  # 5 mm towards the disk, at both ends of the carry
+        tool = traj[result.phases[carry].start if i == carry else result.phases[carry].end]
+        o = np.array(poses["o"][i][:2])
+        poses["o"][i][:2] = list(o + 0.005 * (tool - o) / np.linalg.norm(tool - o))
+    found = verify(problem, dataclasses.replace(result, object_poses=poses))
+    assert any("collision planar_body vs o" in p for p in found), found
