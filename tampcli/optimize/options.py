@@ -33,7 +33,7 @@ class OptimizeOptions:
     waypoints: int = 10
     margin: float = 0.01
     tight_margin: float = 0.001
-    sampling_time: float = 4.0
+    sampling_time: float = 8.0
     activation: float = 0.05
     max_iterations: int = 200
     time_limit: float = 30.0
