@@ -169,7 +169,20 @@ def _shares_prefix(problem, warm) -> bool:
             and tuple(problem.names[:len(warm.names)]) == tuple(warm.names))
 
 
-def _keyframes(run: _Run, warm, grips: dict[int, float] | None = None) -> TrajectoryResult:
+def _keyframes(run: _Run, warm) -> TrajectoryResult:
+    """The keyframe NLP; where it fails, again with the planar suction grips kept at
+    the middle of each face (`_face_grips`: a peg pushed into a socket by its back face)."""
+    result = _keyframes_with(run, warm)
+    for grips in _face_grips(run.problem, result):
+        if result.solved or result.proved or time.perf_counter() > run.deadline:
+            break
+        again = _keyframes_with(run, warm, grips)
+        result = again if again.solved else result
+    return result
+
+
+def _keyframes_with(run: _Run, warm, grips: dict[int, float] | None = None
+                    ) -> TrajectoryResult:
     """`grips`: step -> a grip parameter the NLP keeps (the NLP's choice otherwise)."""
     problem = run.problem
     why = _too_small(problem) or _beyond_reach(problem)
@@ -272,16 +285,21 @@ def _path(run: _Run, warm) -> TrajectoryResult:
         if not kfr.solved:
             return run.result(kfr.status, violation=kfr.violation,
                               worst_constraint=kfr.worst_constraint, proved=kfr.proved)
-    result = _path_through(run, kfr)
-    for grips in _face_grips(problem, kfr):
-        if result.solved or time.perf_counter() > run.deadline:
+    # A suction grip off a face's middle first gets that face (a carry in line with
+    # the disk), then the NLP's own angle, then the other faces.
+    faces = list(_face_grips(problem, kfr))
+    result = None
+    for grips in faces[:1] + [None] + faces[1:]:
+        if result is not None and (result.solved or time.perf_counter() > run.deadline):
             break
-        run.stage = "keyframes"
-        again = _keyframes(run, warm, grips)
-        run.stage = "path"
-        if again.solved:
-            turned = _path_through(run, again)
-            result = turned if turned.solved else result
+        start = kfr
+        if grips is not None:
+            run.stage = "keyframes"
+            start = _keyframes_with(run, warm, grips)
+            run.stage = "path"
+        if start.solved:
+            found = _path_through(run, start)
+            result = found if result is None or found.solved else result
     return result
 
 
@@ -296,6 +314,8 @@ def _face_grips(problem, kfr):
     """
     steps = {s.index: s for s in problem.steps}
     sides = {}
+    if not kfr.keyframes:
+        return
     for index, t in kfr.keyframes.grip.items():
         grip = grip_of(problem, steps[index], kfr.choices)
         if isinstance(grip, SideGrip) and grip.half is not None:
