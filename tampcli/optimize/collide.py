@@ -19,9 +19,10 @@ import numpy as np
 from tampcli.optimize.expr import Label, PoseX, RowSet
 from tampcli.optimize.grips import Frame, Grip
 
-# m: how deep the optimizer lets a contact being entered or left go (verify's
-# limit, PENETRATION, is 1 mm: half of it is left for the points between samples).
-TOUCH_DEPTH = 5e-4
+# m: how much deeper than at its keyframe the optimizer lets a contact being entered
+# or left go at a sample point (verify's limit, PENETRATION, is 1 mm; the independent
+# checker's meshes measure up to ~1 mm deeper than FCL's hulls, found at 0.5 mm here).
+TOUCH_SLACK = 1e-4
 
 
 @dataclass(frozen=True)
@@ -70,8 +71,8 @@ def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | No
 
     `q_weights`: [(block, weight)] whose weighted sum is q (one block at a keyframe;
     two at a point between waypoints). `poses`: bodies not at their start pose.
-    `margins`: a key's own margin where it is not `margin` (-TOUCH_DEPTH for a
-    contact being entered or left: touching).
+    `margins`: a key's own margin where it is not `margin` (about 0 for a contact
+    being entered or left: touching).
     """
     best: dict[str, object] = {}
     for c in contacts:

@@ -16,7 +16,7 @@ from tampcli.optimize.collide import held_spec
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible
 from tampcli.optimize.path import (
     allowed_contacts,
-    near_ends,
+    motion_margins,
     phase_rows_fn,
     sample_clearance,
     via_points,
@@ -87,12 +87,12 @@ def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
     problem = run.problem
     m = problem.motions[ctx.index]
 
-    near = near_ends(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, margin,
-                     min(margin, problem.options.tight_margin))
+    own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, margin,
+                         min(margin, problem.options.tight_margin))
 
     def rows(n_checks, keep=None):
         return phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
-                             run.checker, T, n_checks, ctx.rest_z, label, keep, margin, near)
+                             run.checker, T, n_checks, ctx.rest_z, label, keep, margin, own)
 
     bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
                       strict=True))
@@ -105,7 +105,7 @@ def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
         if out.status != "solved":
             return out
         slack = sample_clearance(problem, m, ctx.q_a, ctx.q_b, out.x, ctx.held, ctx.moved,
-                                 run.checker, T, checks, margin, LAZY_BAND, near)
+                                 run.checker, T, checks, margin, LAZY_BAND, own)
         if min(slack.values()) >= -FEASIBILITY:
             # Same cost, more constraints: an optimum with fewer rows that satisfies
             # all of them is an optimum of the full NLP.

@@ -11,12 +11,14 @@ segments too: they move with the first and last interior waypoints).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import REST_TOLERANCE
 from tampcli.optimize.collide import (
-    TOUCH_DEPTH,
+    TOUCH_SLACK,
     Held,
     body_matrices,
     contact_key,
@@ -58,13 +60,14 @@ def samples(T: int, checks: int):
 def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: Held | None,
                   moved: dict, kin, checker, T: int, checks: int, rest_z: float | None,
                   label: str, keep=None, margin: float | None = None,
-                  near: dict[str, float] | None = None):
+                  own: MotionMargins | None = None):
     """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed).
 
     `keep(tau) -> bool` selects the sample points that get collision rows
     (all when None). `rest_z`: the height a pushed object keeps (None: nothing
-    is pushed). `margin`: the clearance kept (the options' when None); `near`:
-    a smaller one for some keys (`near_ends`).
+    is pushed). `margin`: the clearance kept (the options' when None); `own`:
+    the motion's margins for some keys (`motion_margins`; None: the contacts
+    entered or left touch, TOUCH_SLACK deep at most).
     """
     opts = problem.options
     margin = opts.margin if margin is None else margin
@@ -78,7 +81,8 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         return waypoint_block(i) if 0 < i < T else None
 
     ignores = [allowed_contacts(m)] * len(pts)
-    margins = [sample_margins(m, tau, T, near) for tau, _, _ in pts]
+    own = own or MotionMargins.touching(m)
+    margins = [own.at(tau, T) for tau, _, _ in pts]
     weights = [[(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
                 if b is not None and wgt > 0] for _, i, s in pts]
     where = np.array([i for _, i, _ in pts], dtype=int)
@@ -97,10 +101,10 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         _step_rows(rows, d, T, label)
         samples_q = (1 - frac) * qs[where] + frac * qs[where + 1]
         contacts = checker.distances_many(samples_q, matrices, spec, ignores, opts.activation)
-        for q, found, wts, own in zip(samples_q, contacts, weights, margins, strict=True):
+        for q, found, wts, keyed in zip(samples_q, contacts, weights, margins, strict=True):
             frame = kin.frame(q) if held is not None and held.t_block else None
             contact_rows(rows.ineq, label, found, wts, frame, held, poses, keys,
-                         opts.activation, margin, own)
+                         opts.activation, margin, keyed)
         if rest_z is not None and not problem.planar:
             for i in range(1, T):
                 frame = kin.frame(qs[i])
@@ -139,42 +143,58 @@ def allowed_contacts(m: MotionPhase) -> frozenset[str]:
     return frozenset(m.sliding)
 
 
-def touching(m: MotionPhase, tau: float, T: int) -> frozenset[str]:
-    """What a sample at position tau of motion m may touch, not penetrate: the
-    contacts it leaves in its first segment or enters in its last."""
-    touch = set()
-    if tau < 1:
-        touch |= m.leave_contact
-    if tau > T - 1:
-        touch |= m.enter_contact
-    return frozenset(touch)
+@dataclass(frozen=True)
+class MotionMargins:
+    """Per-key margins of one motion where they are not its margin.
+
+    near: `tight` for what is closer than the margin at either keyframe (other
+    than the contacts the motion enters or leaves): a slot the keyframe NLP
+    could only fill with the tight margin. Held to the margin there, the samples
+    near the keyframe could not be feasible, and the NLP would make the last
+    segment as long as it takes for them to land outside the slot.
+    entering / leaving: the contacts the motion ends or starts in, in its last
+    or first segment: touching, never deeper than at the keyframe (a finger
+    that ends a hair inside what it grasps does not sweep further in on the way).
+    """
+
+    near: dict[str, float]
+    entering: dict[str, float]
+    leaving: dict[str, float]
+
+    @classmethod
+    def touching(cls, m: MotionPhase) -> MotionMargins:
+        return cls({}, dict.fromkeys(m.enter_contact, -TOUCH_SLACK),
+                   dict.fromkeys(m.leave_contact, -TOUCH_SLACK))
+
+    def at(self, tau: float, T: int) -> dict[str, float]:
+        out = dict(self.near)
+        if tau < 1:
+            out.update(self.leaving)
+        if tau > T - 1:
+            out.update(self.entering)
+        return out
 
 
-def sample_margins(m: MotionPhase, tau: float, T: int, near: dict[str, float] | None
-                   ) -> dict[str, float]:
-    """The keys whose margin at tau is not the motion's: `near`'s, and -TOUCH_DEPTH
-    for the contacts being touched there."""
-    out = dict(near or {})
-    out.update(dict.fromkeys(touching(m, tau, T), -TOUCH_DEPTH))
-    return out
-
-
-def near_ends(checker, m: MotionPhase, q_a, q_b, held, moved, margin: float, tight: float
-              ) -> dict[str, float]:
-    """key -> `tight` for what is closer than `margin` at either keyframe (other than
-    the contacts the motion enters or leaves): a slot the keyframe NLP could only
-    fill with the tight margin. Held to the margin there, the samples near the
-    keyframe could not be feasible, and the NLP would make the last segment as
-    long as it takes for them to land outside the slot."""
+def motion_margins(checker, m: MotionPhase, q_a, q_b, held, moved, margin: float,
+                   tight: float) -> MotionMargins:
     ends = m.enter_contact | m.leave_contact
     found = checker.distances_many(np.array([q_a, q_b]), moved, held_spec(held),
                                    [allowed_contacts(m)] * 2, margin)
-    return {k: tight for cs in found for c in cs
-            if c.distance < margin and (k := contact_key(c)) not in ends}
+    least = [{}, {}]
+    for side, cs in zip(least, found, strict=True):
+        for c in cs:
+            k = contact_key(c)
+            side[k] = min(side.get(k, np.inf), c.distance)
+    near = {k: tight for side in least for k, d in side.items() if d < margin and k not in ends}
+
+    def touch(keys, side):
+        return {k: min(0.0, side.get(k, 0.0)) - TOUCH_SLACK for k in keys}
+
+    return MotionMargins(near, touch(m.enter_contact, least[1]), touch(m.leave_contact, least[0]))
 
 
 def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker, T, checks,
-                     margin: float, horizon: float, near: dict[str, float] | None = None
+                     margin: float, horizon: float, own: MotionMargins
                      ) -> dict[float, float]:
     """tau -> least slack over the sample's contacts (distance less the margin the rows
     keep for that contact), capped at `horizon`."""
@@ -186,8 +206,8 @@ def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker,
                                       [allowed_contacts(m)] * len(pts), horizon + margin)
     out = {}
     for (tau, _, _), found in zip(pts, contacts, strict=True):
-        own = sample_margins(m, tau, T, near)
-        out[tau] = min((c.distance - own.get(contact_key(c), margin) for c in found),
+        at = own.at(tau, T)
+        out[tau] = min((c.distance - at.get(contact_key(c), margin) for c in found),
                        default=horizon)
     return out
 

@@ -12,7 +12,7 @@ from tampcli.geometry.locate import find_modes
 from tampcli.geometry.scene import load_scene
 from tampcli.optimize.modes import load_modes
 from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.path import allowed_contacts, touching
+from tampcli.optimize.path import MotionMargins, allowed_contacts
 from tampcli.optimize.problem import lower
 from tampcli.optimize.skeleton import MotionPhase
 from tampcli.optimize.solve import solve
@@ -81,9 +81,11 @@ def test_touching_replaces_ignoring_at_the_ends_of_a_motion():
     m = MotionPhase(0, 0, None, None, "free", enter_contact=frozenset({"a"}),
                     leave_contact=frozenset({"table"}), sliding=frozenset({"bench"}))
     assert allowed_contacts(m) == {"bench"}
-    assert touching(m, 0.5, 10) == {"table"}
-    assert touching(m, 5.0, 10) == frozenset()
-    assert touching(m, 9.5, 10) == {"a"}
+    own = MotionMargins({"wall": 0.001}, {"a": -0.0003}, {"table": 0.0})
+    assert own.at(0.5, 10) == {"wall": 0.001, "table": 0.0}
+    assert own.at(5.0, 10) == {"wall": 0.001}
+    assert own.at(9.5, 10) == {"wall": 0.001, "a": -0.0003}
+    assert MotionMargins.touching(m).at(9.5, 10)["a"] < 0
 
 
 def test_planar_disk_through_a_doorway_with_5_mm_a_side(robust):
