@@ -153,8 +153,11 @@ class MotionMargins:
     near the keyframe could not be feasible, and the NLP would make the last
     segment as long as it takes for them to land outside the slot.
     entering / leaving: the contacts the motion ends or starts in, in its last
-    or first segment: touching, never deeper than at the keyframe (a finger
-    that ends a hair inside what it grasps does not sweep further in on the way).
+    or first segment: never closer than at the keyframe (nor than the margin),
+    so touching where the keyframe touches; fingers that straddle what they
+    grasp with millimetres to spare keep them on the way down (brushing the
+    object on the way, they measured 1 mm deeper in the independent checker's
+    meshes than in our hulls).
     """
 
     near: dict[str, float]
@@ -188,7 +191,7 @@ def motion_margins(checker, m: MotionPhase, q_a, q_b, held, moved, margin: float
     near = {k: tight for side in least for k, d in side.items() if d < margin and k not in ends}
 
     def touch(keys, side):
-        return {k: min(0.0, side.get(k, 0.0)) - TOUCH_SLACK for k in keys}
+        return {k: min(margin, side.get(k, margin)) - TOUCH_SLACK for k in keys}
 
     return MotionMargins(near, touch(m.enter_contact, least[1]), touch(m.leave_contact, least[0]))
 
