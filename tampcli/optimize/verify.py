@@ -8,8 +8,8 @@ A contact a motion enters or leaves (the object about to be grasped or pushed,
 the support under one put down or lifted, the object just released) is
 touching, held to the same 1 mm as everything else; only what a carried or
 pushed object slides on is left out (the modes' semantics, taken from the
-lowered problem). The planar robot's suction grip holds its object against
-the tool's side: that contact is touching too.
+lowered problem). The planar robot holds (or pushes) its object against the
+tool's side: that contact is touching too.
 """
 
 from __future__ import annotations
@@ -105,13 +105,13 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
 
 def _held_against_tool(problem, m, q, others, held):
     """(distance, tau, contact) of an object held against the tool's side (the planar
-    robot's suction) when it is deeper in the tool than touching, else None.
+    robot's suction or push) when it is deeper in the tool than touching, else None.
 
     The collision model leaves out what the tool holds against its own rigid group
     (fingers close on a grasped object); held this way it is a contact on a side face,
     and the grip is rigid over the phase, so one configuration measures it.
     """
-    if held is None or not problem.planar or m.pushes:
+    if held is None or not problem.planar:
         return None
     checker = problem.checker
     worst = None

@@ -23,9 +23,8 @@ def grip_of(problem, step, choices) -> Grip:
     choice = choices.get(step.index, NO_CHOICE)
     info = problem.bodies[step.obj]
     if problem.planar:
-        # A held object touches the rim wherever it is taken (a box's corners included);
-        # a push's contact geometry is the push kind's, at the rim plus the larger half.
-        touching = step.kind.holds and not info.disk
+        # The object touches the rim wherever it is taken (a box's corners included).
+        touching = not info.disk
         base_z = float(problem.scene.robot.base_pose[2, 3])
         rim = problem.scene.robot.radius
         z = choice.z if choice.z is not None else info.pose[2]

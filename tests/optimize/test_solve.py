@@ -30,13 +30,7 @@ def _segment_hits_pillar(scene, a, b):
     return False
 
 
-CORNER_PUSH = pytest.mark.xfail(strict=True, reason="the planar push kind's grip (rim plus the larger half extent, at any contact "
-                   "angle) puts the disk 1.2 cm into the cube's corner at the push's keyframe; "
-                   "verify now holds the approach's end to touching (the push kind's face "
-                   "grips fix it)")
-
-
-@pytest.mark.parametrize("skeleton", [pytest.param("push", marks=CORNER_PUSH), "pick-place"])
+@pytest.mark.parametrize("skeleton", sorted(PLANAR_SKELETONS))
 def test_seed_planar_example_both_skeletons_solve(planar, skeleton):
     scene, modes, world = planar
     problem = lower(ops(*PLANAR_SKELETONS[skeleton]), scene, modes, world)

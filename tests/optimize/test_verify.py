@@ -81,10 +81,6 @@ def test_joint_limits_and_unmoved_objects(solved):
     assert any("moves but is not attached" in p for p in verify(problem, moved))
 
 
-@pytest.mark.xfail(strict=True, reason="the planar push kind's grip (rim plus the larger half extent, at any contact "
-                   "angle) puts the disk 1.2 cm into the cube's corner at the push's keyframe; "
-                   "verify now holds the approach's end to touching (the push kind's face "
-                   "grips fix it)")
 def test_a_push_that_starts_away_from_the_object(planar):
     scene, modes, world = planar
     problem = lower(ops("(push o start goal floor)"), scene, modes, world)
