@@ -222,3 +222,21 @@ def test_fingers_do_not_brush_what_they_are_about_to_grasp(robust):
     # The margin holds at the NLP's sample points; between them (40 a segment here)
     # it may dip by millimetres, not to touching.
     assert _clearance(problem, result, 0, "a") > 0.003
+
+
+def test_face_grips_put_the_rim_at_the_middle_of_each_face(planar):
+    from tampcli.optimize.solve import _face_grips
+
+    scene, modes, world = planar
+    problem = lower(ops("(pick o start)", "(place o goal)"), scene, modes, world)
+    kf = solve(problem, "keyframes")
+    assert kf.solved
+    (step, t), = kf.keyframes.grip.items()
+    yaw = kf.choices[step].yaw
+    tries = [grips[step] for grips in _face_grips(problem, kf)]
+    assert 3 <= len(tries) <= 4
+    for f in tries:
+        quarter = (f - yaw) / (np.pi / 2)
+        assert quarter == pytest.approx(round(quarter), abs=1e-9)
+        assert abs(f - t) <= np.pi + 1e-9
+    assert [abs(f - t) for f in tries] == sorted(abs(f - t) for f in tries)
