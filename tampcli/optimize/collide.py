@@ -19,6 +19,11 @@ import numpy as np
 from tampcli.optimize.expr import Label, PoseX, RowSet
 from tampcli.optimize.grips import Frame, Grip
 
+# m: how much deeper than at its keyframe the optimizer lets a contact being entered
+# or left go at a sample point (verify's limit, PENETRATION, is 1 mm; the independent
+# checker's meshes measure up to ~1 mm deeper than FCL's hulls, found at 0.5 mm here).
+TOUCH_SLACK = 1e-4
+
 
 @dataclass(frozen=True)
 class Held:
@@ -38,7 +43,8 @@ def row_keys(bodies, ignore, held: Held | None) -> list[str]:
     return [b for b in bodies if b not in skip] + ["self"]
 
 
-def _key(contact) -> str:
+def contact_key(contact) -> str:
+    """The row a contact belongs to: its body's name, or "self"."""
     kind, _, name = contact.b.partition(":")
     return name if kind == "body" else "self"
 
@@ -58,29 +64,34 @@ def held_spec(held: Held | None):
 
 def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | None,
                  held: Held | None, poses: dict[str, PoseX], keys: list[str],
-                 activation: float, margin: float) -> None:
+                 activation: float, margin: float, margins: dict[str, float] | None = None
+                 ) -> None:
     """Add len(keys) rows for configuration q = sum of weights * blocks (see module doc),
     from the contacts the checker found at q.
 
     `q_weights`: [(block, weight)] whose weighted sum is q (one block at a keyframe;
     two at a point between waypoints). `poses`: bodies not at their start pose.
+    `margins`: a key's own margin where it is not `margin` (about 0 for a contact
+    being entered or left: touching).
     """
     best: dict[str, object] = {}
     for c in contacts:
-        k = _key(c)
+        k = contact_key(c)
         if k in best and best[k].distance <= c.distance:
             continue
         best[k] = c
-    values = np.full(len(keys), activation - margin)
+    own = margins or {}
+    margins = np.array([own.get(k, margin) for k in keys])
+    values = activation - margins
     labels = [Label(step, "clearance", "m")] * len(keys)
     jac: dict[str, np.ndarray] = {}
     for r, k in enumerate(keys):
         c = best.get(k)
         if c is None or c.distance >= activation:
             continue
-        values[r] = c.distance - margin
-        labels[r] = Label(step, f"collision {_short(c.a)} vs {_short(c.b)} (margin "
-                          f"{100 * margin:.0f} cm)")
+        values[r] = c.distance - margins[r]
+        labels[r] = Label(step, f"collision {_short(c.a)} vs {_short(c.b)} "
+                          f"({_allowance(margins[r])})")
         for block, w in q_weights:
             _acc(jac, block, r, len(keys), w * c.gradient)
         if held is not None and held.t_block is not None and c.a == f"held:{held.name}":
@@ -99,6 +110,12 @@ def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | No
             for block, a in P.through(g).items():
                 _acc(jac, block, r, len(keys), a[0])
     rows.add(values, jac, labels)
+
+
+def _allowance(margin: float) -> str:
+    if margin < 0:
+        return f"touching: {1000 * -margin:.1f} mm deep at most"
+    return f"margin {1000 * margin:.0f} mm"
 
 
 def _acc(jac, block, row, m, grad) -> None:

@@ -115,18 +115,58 @@ class TopGrip(Grip):
         return np.array(self.c0), G, np.zeros(3), np.zeros((3, 3))
 
 
+def touch_distance(a: float, half: tuple[float, float] | None, rim: float,
+                   radius: float = 0.0) -> tuple[float, float]:
+    """(s, ds/da): how far from an object's centre a disk of radius `rim` touches it,
+    in direction `a` of the object's frame. `half`: the half extents of a box's
+    footprint; None for an upright cylinder of `radius`.
+
+    The disk's centre lies on the footprint grown by `rim` (a rounded
+    rectangle): on a flat side, or on the arc round a corner, where a constant
+    distance (rim plus the larger half extent) would put the disk inside the box.
+    """
+    if half is None:
+        return rim + radius, 0.0
+    hx, hy = half
+    ca, sa = math.cos(a), math.sin(a)
+    cx, sy = abs(ca), abs(sa)
+    if cx > 1e-12 and (hx + rim) / cx * sy <= hy:
+        s = (hx + rim) / cx
+        return s, s * sa / ca
+    if sy > 1e-12 and (hy + rim) / sy * cx <= hx:
+        s = (hy + rim) / sy
+        return s, -s * ca / sa
+    b = cx * hx + sy * hy
+    root = math.sqrt(max(rim * rim - hx * hx - hy * hy + b * b, 0.0))
+    db = -sa * math.copysign(1.0, ca) * hx + ca * math.copysign(1.0, sa) * hy
+    return b + root, db * (1.0 + b / root if root > 0 else 1.0)
+
+
 @dataclass(frozen=True)
 class SideGrip(Grip):
-    """The planar robot's rim on the object's side: t is the contact angle."""
+    """The planar robot's rim on the object's side: t is the contact angle.
 
-    rho: float = 0.0  # centre distance from the robot axis
+    The centre is where the rim touches the object's side in direction t
+    (`touch_distance`); `rho` stands for it when `half` is None (a disk).
+    """
+
+    rho: float = 0.0  # centre distance from the robot axis (a disk: the same at every t)
     yaw: float = 0.0  # object yaw (the planar robot does not turn)
+    half: tuple[float, float] | None = None  # a box's footprint half extents
+    rim: float = 0.0  # the robot's radius (with `half`)
     has_param = True
+
+    def distance(self, t: float) -> tuple[float, float]:
+        """(centre distance, its derivative in t)."""
+        if self.half is None:
+            return self.rho, 0.0
+        return touch_distance(t - self.yaw, self.half, self.rim)
 
     def parts(self, t: float):
         ct, st = math.cos(t), math.sin(t)
-        c = np.array([self.rho * ct, self.rho * st, self.c0[2]])
-        dc = np.array([-self.rho * st, self.rho * ct, 0.0])
+        rho, drho = self.distance(t)
+        c = np.array([rho * ct, rho * st, self.c0[2]])
+        dc = np.array([drho * ct - rho * st, drho * st + rho * ct, 0.0])
         cy, sy = math.cos(self.yaw), math.sin(self.yaw)
         G = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
         return c, G, dc, np.zeros((3, 3))

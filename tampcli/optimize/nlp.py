@@ -75,9 +75,14 @@ def violation_of(eq, ineq) -> tuple[float, int, str]:
     return best
 
 
-def nlp_feasible(evaluate, layout, x) -> bool:
+def violation_at(evaluate, layout, x) -> float:
+    """The largest constraint violation of the NLP at x (m or rad)."""
     eq, ineq = (_Evaluator(evaluate, layout)(x)[i] for i in (2, 4))
-    return violation_of(eq, ineq)[0] <= FEASIBILITY
+    return violation_of(eq, ineq)[0]
+
+
+def nlp_feasible(evaluate, layout, x) -> bool:
+    return violation_at(evaluate, layout, x) <= FEASIBILITY
 
 
 def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float,

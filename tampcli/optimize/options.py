@@ -15,6 +15,11 @@ class OptimizeOptions:
         action is the last one.
     margin: clearance (m) the optimizer keeps between moving parts and the world;
         `verify` accepts anything not penetrating, so the margin is slack for it.
+    tight_margin: the clearance (m) an NLP is solved again with where `margin` made it
+        infeasible (a passage narrower than twice the margin): the margin never turns a
+        feasible problem infeasible, it shrinks where the geometry needs it.
+    sampling_time: wall seconds a motion's sampling-based planner (RRT-Connect over the
+        collision model) may take when the interpolated and via-point starts fail.
     activation: distance (m) under which a pair enters the constraints; pairs further
         apart contribute a constant row (the vector keeps a fixed size per SLSQP call).
     max_iterations: SLSQP iterations per NLP solve (a count).
@@ -27,6 +32,8 @@ class OptimizeOptions:
 
     waypoints: int = 10
     margin: float = 0.01
+    tight_margin: float = 0.001
+    sampling_time: float = 8.0
     activation: float = 0.05
     max_iterations: int = 200
     time_limit: float = 30.0
@@ -36,6 +43,11 @@ class OptimizeOptions:
     def __post_init__(self):
         require_int(self.waypoints, "waypoints", 2)
         require_number(self.margin, "margin", unit="m")
+        require_number(self.tight_margin, "tight_margin", unit="m")
+        if self.tight_margin > self.margin:
+            raise OptionError("tight_margin", f"must not exceed margin ({self.margin} m), "
+                              f"got {self.tight_margin!r}")
+        require_number(self.sampling_time, "sampling_time", unit="s")
         require_number(self.activation, "activation", unit="m")
         if not self.activation > self.margin:
             raise OptionError("activation", f"must exceed margin ({self.margin} m), "

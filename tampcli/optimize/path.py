@@ -11,17 +11,29 @@ segments too: they move with the first and last interior waypoints).
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import REST_TOLERANCE
-from tampcli.optimize.collide import Held, body_matrices, contact_rows, held_spec, row_keys
-from tampcli.optimize.expr import PoseX, held_posex
+from tampcli.optimize.collide import (
+    TOUCH_SLACK,
+    Held,
+    body_matrices,
+    contact_key,
+    contact_rows,
+    held_spec,
+    row_keys,
+)
+from tampcli.optimize.expr import Label, PoseX, held_posex
 from tampcli.optimize.grips import held_pose
 from tampcli.optimize.layout import Layout, waypoint_block
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.skeleton import MotionPhase
 from tampcli.optimize.stages import Rows
+
+STEP_RATIO = 2.0  # longest segment of a motion over its root-mean-square step
 
 
 def pose_of_matrix(t) -> PoseX:
@@ -47,14 +59,18 @@ def samples(T: int, checks: int):
 
 def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: Held | None,
                   moved: dict, kin, checker, T: int, checks: int, rest_z: float | None,
-                  label: str, keep=None):
+                  label: str, keep=None, margin: float | None = None,
+                  own: MotionMargins | None = None):
     """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed).
 
     `keep(tau) -> bool` selects the sample points that get collision rows
     (all when None). `rest_z`: the height a pushed object keeps (None: nothing
-    is pushed).
+    is pushed). `margin`: the clearance kept (the options' when None); `own`:
+    the motion's margins for some keys (`motion_margins`; None: the contacts
+    entered or left touch, TOUCH_SLACK deep at most).
     """
     opts = problem.options
+    margin = opts.margin if margin is None else margin
     layout = phase_layout(problem, T)
     poses = {name: pose_of_matrix(t) for name, t in moved.items()}
     keys = row_keys(list(problem.bodies), m.sliding, held)
@@ -64,7 +80,9 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     def block(i):
         return waypoint_block(i) if 0 < i < T else None
 
-    ignores = [allowed_contacts(m, tau, T) for tau, _, _ in pts]
+    ignores = [allowed_contacts(m)] * len(pts)
+    own = own or MotionMargins.touching(m)
+    margins = [own.at(tau, T) for tau, _, _ in pts]
     weights = [[(b, wgt) for b, wgt in ((block(i), 1 - s), (block(i + 1), s))
                 if b is not None and wgt > 0] for _, i, s in pts]
     where = np.array([i for _, i, _ in pts], dtype=int)
@@ -80,12 +98,13 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         rows.cost = float(np.sum(d * d))
         for i in range(1, T):
             rows.cost_grad[waypoint_block(i)] = 2.0 * (d[i - 1] - d[i])
+        _step_rows(rows, d, T, label)
         samples_q = (1 - frac) * qs[where] + frac * qs[where + 1]
         contacts = checker.distances_many(samples_q, matrices, spec, ignores, opts.activation)
-        for q, found, wts in zip(samples_q, contacts, weights, strict=True):
+        for q, found, wts, keyed in zip(samples_q, contacts, weights, margins, strict=True):
             frame = kin.frame(q) if held is not None and held.t_block else None
             contact_rows(rows.ineq, label, found, wts, frame, held, poses, keys,
-                         opts.activation, opts.margin)
+                         opts.activation, margin, keyed)
         if rest_z is not None and not problem.planar:
             for i in range(1, T):
                 frame = kin.frame(qs[i])
@@ -97,28 +116,103 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     return evaluate, layout
 
 
-def allowed_contacts(m: MotionPhase, tau: float, T: int) -> frozenset[str]:
-    """What a sample at position tau of motion m may touch: what it slides along, and
-    the contacts it leaves in its first segment or enters in its last."""
-    ignore = set(m.sliding)
-    if tau < 1:
-        ignore |= m.leave_contact
-    if tau > T - 1:
-        ignore |= m.enter_contact
-    return frozenset(ignore)
+def _step_rows(rows: Rows, d: np.ndarray, T: int, label: str) -> None:
+    """|d_i|^2 <= STEP_RATIO^2 * mean |d_j|^2 for each of the T segments.
+
+    Collision rows hold at sample points only: without these rows the NLP
+    makes the segment that crosses a wall as long as it takes for its sample
+    points to land on either side (measured: a Panda's last segment 8 times
+    the others, through a slot's wall between every 16th point).
+    """
+    sq = np.sum(d * d, axis=1)
+    c = STEP_RATIO ** 2 / T
+    values = c * np.sum(sq) - sq
+    dS = {i: 2.0 * (d[i - 1] - d[i]) for i in range(1, T)}  # d sum |d|^2 / d q_i
+    jac = {}
+    for i in range(1, T):
+        J = np.outer(np.full(T, c), dS[i])
+        J[i - 1] -= 2.0 * d[i - 1]  # d |d_{i-1}|^2 / d q_i
+        J[i] += 2.0 * d[i]  # d |d_i|^2 / d q_i
+        jac[waypoint_block(i)] = J
+    rows.ineq.add(values, jac, Label(label, f"a segment longer than {STEP_RATIO:g} times "
+                                     "the mean step", ""))
+
+
+def allowed_contacts(m: MotionPhase) -> frozenset[str]:
+    """What motion m may go into: only what it slides along (resting contact)."""
+    return frozenset(m.sliding)
+
+
+@dataclass(frozen=True)
+class MotionMargins:
+    """Per-key margins of one motion where they are not its margin.
+
+    near: `tight` for what is closer than the margin at either keyframe (other
+    than the contacts the motion enters or leaves): a slot the keyframe NLP
+    could only fill with the tight margin. Held to the margin there, the samples
+    near the keyframe could not be feasible, and the NLP would make the last
+    segment as long as it takes for them to land outside the slot.
+    entering / leaving: the contacts the motion ends or starts in, in its last
+    or first segment: never closer than at the keyframe (nor than the margin),
+    so touching where the keyframe touches; fingers that straddle what they
+    grasp with millimetres to spare keep them on the way down (brushing the
+    object on the way, they measured 1 mm deeper in the independent checker's
+    meshes than in our hulls).
+    """
+
+    near: dict[str, float]
+    entering: dict[str, float]
+    leaving: dict[str, float]
+
+    @classmethod
+    def touching(cls, m: MotionPhase) -> MotionMargins:
+        return cls({}, dict.fromkeys(m.enter_contact, -TOUCH_SLACK),
+                   dict.fromkeys(m.leave_contact, -TOUCH_SLACK))
+
+    def at(self, tau: float, T: int) -> dict[str, float]:
+        out = dict(self.near)
+        if tau < 1:
+            out.update(self.leaving)
+        if tau > T - 1:
+            out.update(self.entering)
+        return out
+
+
+def motion_margins(checker, m: MotionPhase, q_a, q_b, held, moved, margin: float,
+                   tight: float) -> MotionMargins:
+    ends = m.enter_contact | m.leave_contact
+    found = checker.distances_many(np.array([q_a, q_b]), moved, held_spec(held),
+                                   [allowed_contacts(m)] * 2, margin)
+    least = [{}, {}]
+    for side, cs in zip(least, found, strict=True):
+        for c in cs:
+            k = contact_key(c)
+            side[k] = min(side.get(k, np.inf), c.distance)
+    near = {k: tight for side in least for k, d in side.items() if d < margin and k not in ends}
+
+    def touch(keys, side):
+        return {k: min(margin, side.get(k, margin)) - TOUCH_SLACK for k in keys}
+
+    return MotionMargins(near, touch(m.enter_contact, least[1]), touch(m.leave_contact, least[0]))
 
 
 def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker, T, checks,
-                     horizon: float) -> dict[float, float]:
-    """tau -> smallest distance at that sample (capped at `horizon`), ignoring as the rows do."""
+                     margin: float, horizon: float, own: MotionMargins
+                     ) -> dict[float, float]:
+    """tau -> least slack over the sample's contacts (distance less the margin the rows
+    keep for that contact), capped at `horizon`."""
     w = np.asarray(x).reshape(T - 1, problem.n)
     qs = np.vstack([q_a, w, q_b])
     pts = samples(T, checks)
     samples_q = np.array([(1 - s) * qs[i] + s * qs[i + 1] for _, i, s in pts])
     contacts = checker.distances_many(samples_q, moved, held_spec(held),
-                                      [allowed_contacts(m, tau, T) for tau, _, _ in pts], horizon)
-    return {tau: min((c.distance for c in found), default=horizon)
-            for (tau, _, _), found in zip(pts, contacts, strict=True)}
+                                      [allowed_contacts(m)] * len(pts), horizon + margin)
+    out = {}
+    for (tau, _, _), found in zip(pts, contacts, strict=True):
+        at = own.at(tau, T)
+        out[tau] = min((c.distance - at.get(contact_key(c), margin) for c in found),
+                       default=horizon)
+    return out
 
 
 def via_points(problem: TrajectoryProblem, q_a, q_b, T: int, held_height: float, moved: dict,

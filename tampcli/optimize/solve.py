@@ -18,22 +18,26 @@ import numpy as np
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.final_starts import starts
-from tampcli.optimize.grips import Kinematics
+from tampcli.optimize.grips import Kinematics, SideGrip
 from tampcli.optimize.init import keyframe_guess
-from tampcli.optimize.layout import keyframe_block
-from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, solve_nlp
+from tampcli.optimize.layout import grip_block, keyframe_block
+from tampcli.optimize.motion import solve_motion
+from tampcli.optimize.nlp import FEASIBILITY, solve_nlp, violation_at
 from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.path import phase_rows_fn, sample_clearance, via_points
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import STAGES, TrajectoryResult
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
 from tampcli.optimize.values import Keyframes, placement_blocks, placements_from_blocks
-from tampcli.optimize.world_state import reach_of
+from tampcli.optimize.world_state import grip_of, reach_of
 
 GRIP_BOUND = 4 * math.pi
-LAZY_BAND = 0.01  # m: a point between waypoints this close to violating gets its rows
-LAZY_ROUNDS = 3
 RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
+# Path solves per skeleton that `verify` judges: each round after the first samples the
+# failing motions twice as finely (3, 7, 15 points a segment by default); a motion that
+# ends in a narrow slot can dip into a wall between 7.
+VERIFY_ROUNDS = 3
+FACE_SAME = 0.05  # rad: a contact angle this close to a face's middle is at that face
+FIXED_GRIP = 1e-6  # rad: the bounds' half width around a grip parameter kept fixed
 
 
 class _Run:
@@ -175,6 +179,20 @@ def _shares_prefix(problem, warm) -> bool:
 
 
 def _keyframes(run: _Run, warm) -> TrajectoryResult:
+    """The keyframe NLP; where it fails, again with the planar suction grips kept at
+    the middle of each face (`_face_grips`: a peg pushed into a socket by its back face)."""
+    result = _keyframes_with(run, warm)
+    for grips in _face_grips(run.problem, result):
+        if result.solved or result.proved or time.perf_counter() > run.deadline:
+            break
+        again = _keyframes_with(run, warm, grips)
+        result = again if again.solved else result
+    return result
+
+
+def _keyframes_with(run: _Run, warm, grips: dict[int, float] | None = None
+                    ) -> TrajectoryResult:
+    """`grips`: step -> a grip parameter the NLP keeps (the NLP's choice otherwise)."""
     problem = run.problem
     why = _too_small(problem) or _beyond_reach(problem)
     if why:
@@ -194,9 +212,12 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
     world = problem.world
     bounds = []
     joints = {keyframe_block(k) for k in range(problem.n_keyframes)}
+    fixed = {grip_block(s): t for s, t in (grips or {}).items()}
     for name, _size in layout.blocks:
         if name in joints:
             bounds.extend(zip(world.lower, world.upper, strict=True))
+        elif name in fixed:
+            bounds.append((fixed[name] - FIXED_GRIP, fixed[name] + FIXED_GRIP))
         else:
             bounds.append((-GRIP_BOUND, GRIP_BOUND))
     best = None
@@ -206,6 +227,8 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
         if attempt == 0 and _shares_prefix(problem, warm):
             choices.update(warm.choices)
             guess = guess.warmed(warm.keyframes)
+        if grips:
+            guess = Keyframes(guess.q, {**guess.grip, **grips})
 
         def evaluate(x, choices=choices):
             return keyframe_rows(problem, layout.unpack(x), choices, run.kin, run.checker,
@@ -217,6 +240,8 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
         if out.status == "solved" or time.perf_counter() > run.deadline:
             break
     out, choices = best
+    if out.status != "solved" and time.perf_counter() < run.deadline:
+        out = _tight_keyframes(run, layout, bounds, out, choices)
     kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
     T = problem.options.waypoints
     qs = [run.start, *kf.q]
@@ -234,6 +259,26 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
                       choices=choices, placements=placements)
 
 
+def _tight_keyframes(run: _Run, layout, bounds, out, choices):
+    """The keyframe NLP again with `tight_margin`, from where it failed, when the
+    margin is part of what it violates there (a slot narrower than twice the
+    margin); else, or when that fails too, `out`."""
+    problem = run.problem
+    opts = problem.options
+    if opts.tight_margin >= opts.margin:
+        return out
+    tight = dataclasses.replace(problem, options=dataclasses.replace(
+        opts, margin=opts.tight_margin))
+
+    def evaluate(x):
+        return keyframe_rows(tight, layout.unpack(x), choices, run.kin, run.checker, run.start)
+
+    if violation_at(evaluate, layout, out.x) >= out.violation - FEASIBILITY:
+        return out
+    retry = run.nlp(evaluate, layout, out.x, bounds)
+    return retry if retry.status == "solved" or retry.violation < out.violation else out
+
+
 # ---------------------------------------------------------------- path
 
 
@@ -249,6 +294,55 @@ def _path(run: _Run, warm) -> TrajectoryResult:
         if not kfr.solved:
             return run.result(kfr.status, violation=kfr.violation,
                               worst_constraint=kfr.worst_constraint, proved=kfr.proved)
+    # A suction grip off a face's middle first gets that face (a carry in line with
+    # the disk), then the NLP's own angle, then the other faces.
+    faces = list(_face_grips(problem, kfr))
+    result = None
+    for grips in faces[:1] + [None] + faces[1:]:
+        if result is not None and (result.solved or time.perf_counter() > run.deadline):
+            break
+        start = kfr
+        if grips is not None:
+            run.stage = "keyframes"
+            start = _keyframes_with(run, warm, grips)
+            run.stage = "path"
+        if start.solved:
+            found = _path_through(run, start)
+            result = found if result is None or found.solved else result
+    return result
+
+
+def _face_grips(problem, kfr):
+    """Other planar suction grips, kept fixed: the rim at the middle of each face.
+
+    The keyframe NLP takes the cheapest contact angle near its guess; a carry through a
+    passage may need the object in line with the disk (robust-planar p03: beside
+    it, disk and block span 18 cm of an 11 cm doorway), which only the path
+    stage finds out. Nearest faces first; the face the angle is at already is
+    not tried again.
+    """
+    steps = {s.index: s for s in problem.steps}
+    sides = {}
+    if not kfr.keyframes:
+        return
+    for index, t in kfr.keyframes.grip.items():
+        grip = grip_of(problem, steps[index], kfr.choices)
+        if isinstance(grip, SideGrip) and grip.half is not None:
+            faces = [t + _wrap(grip.yaw + j * math.pi / 2 - t) for j in range(4)]
+            sides[index] = sorted(faces, key=lambda f, t=t: abs(f - t))
+    for j in range(4):
+        grips = {i: faces[j] for i, faces in sides.items()}
+        if grips and any(abs(f - kfr.keyframes.grip[i]) > FACE_SAME for i, f in grips.items()):
+            yield grips
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi
+
+
+def _path_through(run: _Run, kfr) -> TrajectoryResult:
+    """The path stage through the keyframes of `kfr` (solved)."""
+    problem = run.problem
     kf, choices = kfr.keyframes, kfr.choices
     contexts = walk(problem, kf, choices, run.start)
     opts = problem.options
@@ -256,11 +350,11 @@ def _path(run: _Run, warm) -> TrajectoryResult:
     waypoints, kkts = {}, []
     checks = opts.interpolation_checks
     failing: set[int] = set()
-    for attempt in range(2):
+    for attempt in range(VERIFY_ROUNDS):
         for ctx in contexts:
             if attempt and ctx.index not in failing:
                 continue
-            out = _solve_phase(run, ctx, T, checks)
+            out = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index))
             if out.status != "solved":
                 label = _phase_label(problem, ctx.index)
                 return run.result(out.status, violation=out.violation,
@@ -278,7 +372,7 @@ def _path(run: _Run, warm) -> TrajectoryResult:
         problems = verify_mod.verify(problem, result)
         if not problems:
             return result
-        # A collision between the sample points: sample the failing phases finer once.
+        # A collision between the sample points: sample the failing phases finer.
         failing.clear()
         failing.update({i for i, _ in verify_mod.failing_motions(problem, result)}
                        or range(problem.n_keyframes))
@@ -296,56 +390,3 @@ def _phase_costs(traj, T, K):
 
 def _phase_label(problem, k) -> str:
     return f"motion {k} before {problem.step_of_keyframe(k).name}"
-
-
-def _solve_phase(run: _Run, ctx, T, checks):
-    """Coarse (waypoints only), then lazily add the points between waypoints that need it.
-
-    The rows of a point between waypoints are added once it comes within
-    margin + LAZY_BAND of something (most never do: a collision query per point
-    per evaluation is what the path NLP spends its time on); each round checks
-    every point and adds the new offenders, so the answer is feasible at every
-    sample point or reported as not.
-    """
-    problem = run.problem
-    m = problem.motions[ctx.index]
-    label = _phase_label(problem, ctx.index)
-    held_height = 0.0
-    if ctx.held is not None:
-        held_height = 2 * problem.bodies[ctx.held.name].half[2]
-
-    def rows(n_checks, keep=None):
-        return phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
-                             run.checker, T, n_checks, ctx.rest_z, label, keep)
-
-    if m.pushes:
-        # A push slides along its support in a straight line (a bend would be a drag):
-        # no lift above the obstacles, no detour around the object it pushes.
-        x0 = np.linspace(ctx.q_a, ctx.q_b, T + 1)[1:-1].reshape(-1)
-    else:
-        x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved,
-                        run.rng).reshape(-1)
-    bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
-                      strict=True))
-    coarse, layout = rows(0)
-    out = run.nlp(coarse, layout, x0, bounds)
-    if checks == 0:
-        return out
-    margin = problem.options.margin
-    kept: set[float] = set()
-    for _ in range(LAZY_ROUNDS):
-        if out.status != "solved":
-            return out
-        clearance = sample_clearance(problem, m, ctx.q_a, ctx.q_b, out.x, ctx.held, ctx.moved,
-                                     run.checker, T, checks, margin + LAZY_BAND)
-        if min(clearance.values()) >= margin - FEASIBILITY:
-            # Same cost, more constraints: an optimum with fewer rows that satisfies
-            # all of them is an optimum of the full NLP.
-            return out
-        kept |= {tau for tau, d in clearance.items() if d < margin + LAZY_BAND}
-        lazy, _ = rows(checks, lambda tau, kept=frozenset(kept): tau == int(tau) or tau in kept)
-        out = run.nlp(lazy, layout, out.x, bounds)
-    full, _ = rows(checks)
-    if out.status != "solved" or nlp_feasible(full, layout, out.x):
-        return out
-    return run.nlp(full, layout, out.x, bounds)

@@ -4,9 +4,12 @@ It trusts nothing the optimizer computed but the trajectory, the phases and the
 object poses at phase boundaries: grasps are re-derived from those poses,
 collisions are checked at `factor` points per segment (10x the waypoint
 resolution by default) with no margin, and every placement is re-measured.
-Contact allowances (the object being grasped in the last segment of the
-approach, its support at lift-off, what a pushed object slides on) are the
-modes' semantics, taken from the lowered problem.
+A contact a motion enters or leaves (the object about to be grasped or pushed,
+the support under one put down or lifted, the object just released) is
+touching, held to the same 1 mm as everything else; only what a carried or
+pushed object slides on is left out (the modes' semantics, taken from the
+lowered problem). The planar robot holds (or pushes) its object against the
+tool's side: that contact is touching too.
 """
 
 from __future__ import annotations
@@ -78,18 +81,15 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
             held = (phase.attached, grasp)
         others = {n: t for n, t in before.items() if n != phase.attached}
         n_seg = phase.end - phase.start
-        taus, qs, ignores = [], [], []
+        taus, qs = [], []
         for i in range(n_seg):
             a, b = traj[phase.start + i], traj[phase.start + i + 1]
             for j in range(factor + (1 if i == n_seg - 1 else 0)):
                 s = j / factor
-                tau = i + s
-                taus.append(tau)
+                taus.append(i + s)
                 qs.append((1 - s) * a + s * b)
-                # The keyframes and the segments next to them may touch what the mode
-                # switch touches (the grasped object, the support under a released one).
-                ignores.append(allowed_contacts(m, tau, n_seg))
-        worst = None
+        worst = _held_against_tool(problem, m, traj[phase.start], others, held)
+        ignores = [allowed_contacts(m)] * len(qs)
         for tau, found in zip(taus, checker.distances_many(np.array(qs), others, held, ignores,
                                                            0.0), strict=True):
             for c in found:
@@ -101,6 +101,27 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
                            f"{c.b.partition(':')[2]}: {100 * d:.1f} cm at waypoint "
                            f"{phase.start + tau:.1f}"))
     return out
+
+
+def _held_against_tool(problem, m, q, others, held):
+    """(distance, tau, contact) of an object held against the tool's side (the planar
+    robot's suction or push) when it is deeper in the tool than touching, else None.
+
+    The collision model leaves out what the tool holds against its own rigid group
+    (fingers close on a grasped object); held this way it is a contact on a side face,
+    and the grip is rigid over the phase, so one configuration measures it.
+    """
+    if held is None or not problem.planar:
+        return None
+    checker = problem.checker
+    worst = None
+    owners = dict.fromkeys(p.owner for p in checker.link_parts
+                           if checker.group[p.link] == checker.tool_group)
+    for owner in owners:
+        c = checker.pair_distance(q, owner, f"held:{held[0]}", others, held)
+        if c.distance < -PENETRATION and (worst is None or c.distance < worst[0]):
+            worst = (c.distance, 0.0, c)
+    return worst
 
 
 def _label(problem, k) -> str:

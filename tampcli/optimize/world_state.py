@@ -23,11 +23,14 @@ def grip_of(problem, step, choices) -> Grip:
     choice = choices.get(step.index, NO_CHOICE)
     info = problem.bodies[step.obj]
     if problem.planar and not step.kind.planar_grip:
+        # The object touches the rim wherever it is taken (a box's corners included).
+        touching = not info.disk
         base_z = float(problem.scene.robot.base_pose[2, 3])
-        rho = problem.scene.robot.radius + max(info.half[0], info.half[1])
+        rim = problem.scene.robot.radius
         z = choice.z if choice.z is not None else info.pose[2]
-        return SideGrip((0.0, 0.0, z - base_z), rho=rho,
-                    yaw=choice.yaw if choice.yaw is not None else info.pose[3])
+        return SideGrip((0.0, 0.0, z - base_z), rho=rim + max(info.half[0], info.half[1]),
+                        yaw=choice.yaw if choice.yaw is not None else info.pose[3],
+                        half=(info.half[0], info.half[1]) if touching else None, rim=rim)
     return step.kind.grip(problem, step, choice)
 
 

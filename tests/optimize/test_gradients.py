@@ -52,8 +52,14 @@ def _check(rows_fn, layout, x, h=1e-6, tol=1e-5):
     return eq, ineq
 
 
-@pytest.mark.parametrize("kind", ["top", "push", "side"])
-def test_held_pose_jacobians(wall, kind):
+BOX_SIDE = SideGrip((0.0, 0.0, 0.02), yaw=0.3, half=(0.05, 0.03), rim=0.05)
+
+
+@pytest.mark.parametrize("kind, t", [("top", 0.4), ("push", 0.4), ("side", 0.4),
+                                     ("box side x", 0.4), ("box corner", 0.9),
+                                     ("box side y", 1.6), ("box corner", -2.2),
+                                     ("box side x", 3.3)])
+def test_held_pose_jacobians(wall, kind, t):
     _, _, world = wall
     kin = Kinematics(world)
     rng = np.random.default_rng(1)
@@ -61,9 +67,8 @@ def test_held_pose_jacobians(wall, kind):
             "push": FaceGrip((0.0, 0.0, 0.01), ((0.0, 1.0, 0.0), (-1.0, 0.0, 0.0),
                                                   (0.0, 0.0, 1.0)), (0.0, -1.0, 0.0),
                              (1.0, 0.0, 0.0), 0.045),
-            "side": SideGrip((0.0, 0.0, 0.02), rho=0.08, yaw=0.3)}[kind]
+            "side": SideGrip((0.0, 0.0, 0.02), rho=0.08, yaw=0.3)}.get(kind, BOX_SIDE)
     q = rng.uniform(world.lower, world.upper)
-    t = 0.4
 
     def value(qq, tt):
         h = held_pose(kin.frame(qq), grip, tt)
@@ -204,3 +209,18 @@ def test_keyframe_rows_panda_push(wall):
     kin = Kinematics(world)
     _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
                                    collisions=False), layout, x)
+
+
+def _rect_distance(p, hx, hy) -> float:
+    return float(np.hypot(max(abs(p[0]) - hx, 0.0), max(abs(p[1]) - hy, 0.0)))
+
+
+@pytest.mark.parametrize("a", np.linspace(-np.pi, np.pi, 37))
+def test_box_side_grip_touches_the_box_at_every_angle(a):
+    """The planar rim's centre lies at the rim's radius from the box, not inside
+    it: a constant centre distance (rim + larger half extent) put it 8 mm deep
+    round the corners of planar-tamp p01's block."""
+    grip = BOX_SIDE
+    c, G, _, _ = grip.parts(a + grip.yaw)
+    robot_in_box = G.T @ -c
+    assert _rect_distance(robot_in_box[:2], 0.05, 0.03) == pytest.approx(grip.rim, abs=1e-9)

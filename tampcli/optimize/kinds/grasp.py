@@ -18,6 +18,7 @@ from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
 from tampcli.optimize import grasp_families as F
 from tampcli.optimize.bodies import TOUCH_TOLERANCE
+from tampcli.optimize.grips import touch_distance
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
@@ -126,7 +127,10 @@ class Grasp(ModeKind):
         tool, obj = walk.tool_end(), walk.after(step.obj)
         d = tool[:3, 3] - obj[:3, 3]
         if problem.planar:
-            reach = problem.scene.robot.radius + max(info.half[0], info.half[1]) + TOUCH_TOLERANCE
+            a = math.atan2(d[1], d[0]) - transforms.yaw_of(obj)
+            touch, _ = touch_distance(a, None if info.disk else tuple(info.half[:2]),
+                                      problem.scene.robot.radius, info.half[0])
+            reach = touch + TOUCH_TOLERANCE
             if math.hypot(d[0], d[1]) > reach:
                 return [f"{step.name}: the robot does not touch {step.obj} "
                         f"({100 * (math.hypot(d[0], d[1]) - reach):.1f} cm away)"]

@@ -1,0 +1,141 @@
+"""One motion's path NLP (its keyframes fixed): the margin schedule, its starts, and
+the points between waypoints added lazily.
+
+`run` is the solve's bookkeeping (solve._Run): the problem, its deadline, the
+checker and kinematics, and `nlp` (one counted SLSQP solve).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import time
+
+import numpy as np
+
+from tampcli.geometry.sampled_path import SamplingOptions, resample, sampled_path
+from tampcli.optimize.collide import held_spec
+from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible
+from tampcli.optimize.path import (
+    allowed_contacts,
+    motion_margins,
+    phase_rows_fn,
+    sample_clearance,
+    via_points,
+)
+
+LAZY_BAND = 0.01  # m: a point between waypoints this close to its limit gets its rows
+LAZY_ROUNDS = 3
+
+
+def solve_motion(run, ctx, T: int, checks: int, label: str):
+    """One motion's path NLP under the margin schedule.
+
+    From the via-point start with the options' margin; where that fails, from
+    a sampled path (RRT-Connect over the same collision model, which finds
+    passages the NLP's gradients cannot: pushed against both walls at once it
+    stalls), first with the margin, then with `tight_margin`, so a passage
+    narrower than twice the margin is still passed. The zero-margin check at
+    10x (`verify`) judges what comes out. Returns the first solved outcome, or
+    the last failure.
+    """
+    problem = run.problem
+    opts = problem.options
+    held_height = 0.0
+    if ctx.held is not None:
+        held_height = 2 * problem.bodies[ctx.held.name].half[2]
+    if problem.motions[ctx.index].pushes:
+        # A push slides along its support in a straight line (a bend would be a drag):
+        # no lift above the obstacles, no detour around the object it pushes.
+        x0 = np.linspace(ctx.q_a, ctx.q_b, T + 1)[1:-1].reshape(-1)
+    else:
+        x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved,
+                        run.rng).reshape(-1)
+    out = _solve_phase(run, ctx, T, checks, label, x0, opts.margin)
+    if out.status == "solved" or time.perf_counter() > run.deadline:
+        return out
+    sampled = _sampled_start(run, ctx, T)
+    tries = [(sampled, opts.margin), (sampled, opts.tight_margin)] if sampled is not None \
+        else [(x0, opts.tight_margin)]
+    for start, margin in tries:
+        out = _solve_phase(run, ctx, T, checks, label, start, margin)
+        if out.status == "solved" or time.perf_counter() > run.deadline:
+            return out
+    return _clear_anyway(run, ctx, T, checks, label, out)
+
+
+def _clear_anyway(run, ctx, T: int, checks: int, label: str, out):
+    """`out` called solved when it meets every row at every sample point with no
+    margin: SLSQP stalls a fraction of a millimetre short of the tight margin in a
+    slot with millimetres to spare (robust-planar p04's plank), where the margin is
+    slack and the zero-margin check at 10x (`verify`) is the judge."""
+    problem = run.problem
+    m = problem.motions[ctx.index]
+    own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, 0.0, 0.0)
+    rows, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
+                                 run.checker, T, checks, ctx.rest_z, label, None, 0.0, own)
+    if nlp_feasible(rows, layout, out.x):
+        return dataclasses.replace(out, status="solved", worst=None)
+    return out
+
+
+def _sampled_start(run, ctx, T: int):
+    """(T-1) * n interior waypoints resampled from a sampled path, or None."""
+    problem = run.problem
+    opts = problem.options
+    budget = min(opts.sampling_time, run.deadline - time.perf_counter())
+    if budget <= 0:
+        return None
+    world = problem.world
+    m = problem.motions[ctx.index]
+    options = SamplingOptions(time_limit=budget, simplify_time=min(0.5, budget / 4),
+                              clearance=opts.tight_margin)
+    path = sampled_path(run.checker, ctx.q_a, ctx.q_b, world.lower, world.upper,
+                        body_poses=ctx.moved, held=held_spec(ctx.held),
+                        ignore=allowed_contacts(m), options=options)
+    if path is None:
+        return None
+    return resample(path, T + 1)[1:-1].reshape(-1)
+
+
+def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
+    """Coarse (waypoints only), then lazily add the points between waypoints that need it.
+
+    The rows of a point between waypoints are added once it comes within
+    LAZY_BAND of its limit (most never do: a collision query per point per
+    evaluation is what the path NLP spends its time on); each round checks
+    every point and adds the new offenders, so the answer is feasible at every
+    sample point or reported as not.
+    """
+    problem = run.problem
+    m = problem.motions[ctx.index]
+
+    own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, margin,
+                         min(margin, problem.options.tight_margin))
+
+    def rows(n_checks, keep=None):
+        return phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
+                             run.checker, T, n_checks, ctx.rest_z, label, keep, margin, own)
+
+    bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
+                      strict=True))
+    coarse, layout = rows(0)
+    out = run.nlp(coarse, layout, x0, bounds)
+    if checks == 0:
+        return out
+    kept: set[float] = set()
+    for _ in range(LAZY_ROUNDS):
+        if out.status != "solved":
+            return out
+        slack = sample_clearance(problem, m, ctx.q_a, ctx.q_b, out.x, ctx.held, ctx.moved,
+                                 run.checker, T, checks, margin, LAZY_BAND, own)
+        if min(slack.values()) >= -FEASIBILITY:
+            # Same cost, more constraints: an optimum with fewer rows that satisfies
+            # all of them is an optimum of the full NLP.
+            return out
+        kept |= {tau for tau, d in slack.items() if d < LAZY_BAND}
+        lazy, _ = rows(checks, lambda tau, kept=frozenset(kept): tau == int(tau) or tau in kept)
+        out = run.nlp(lazy, layout, out.x, bounds)
+    full, _ = rows(checks)
+    if out.status != "solved" or nlp_feasible(full, layout, out.x):
+        return out
+    return run.nlp(full, layout, out.x, bounds)
