@@ -105,6 +105,9 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
             frame = kin.frame(q) if held is not None and held.t_block else None
             contact_rows(rows.ineq, label, found, wts, frame, held, poses, keys,
                          opts.activation, margin, keyed)
+        if m.own:
+            problem.step_of_keyframe(m.index).kind.path_rows(rows, label, problem, qs, held,
+                                                             kin)
         if rest_z is not None and not problem.planar:
             for i in range(1, T):
                 frame = kin.frame(qs[i])

@@ -62,6 +62,10 @@ class ModeKind(ABC):
     def phases(self, walk, step) -> None:
         """The step's mode switch in the trajectory's phases (assemble.PhaseWalk)."""
 
+    def path_rows(self, rows, label, problem, qs, held, kin) -> None:  # noqa: B027 (optional)
+        """Rows the kind adds to the path NLP of its own motion (`MotionPhase.own`)
+        through configurations qs; none by default."""
+
     @abstractmethod
     def check(self, walk, step) -> list[str]:
         """What `verify` re-measures of the step in a trajectory (verify.StepCheck)."""
