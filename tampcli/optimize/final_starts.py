@@ -44,6 +44,17 @@ def _extent(info, yaw: float, axis: int) -> float:
     return 2 * (c * hx + s * hy if axis == 0 else s * hx + c * hy)
 
 
+def _fitting_yaw(info, yaw: float, region) -> float:
+    """The start yaw, or a quarter turn from it when only that fits the region (an
+    oblong object put down across: the NLP does not turn it that far by itself)."""
+    def fits(y):
+        return all(_extent(info, y, axis) <= region.size[axis] for axis in (0, 1))
+
+    if fits(yaw) or not fits(yaw + 0.5 * math.pi):
+        return yaw
+    return yaw + 0.5 * math.pi
+
+
 def _robot_xy(problem) -> np.ndarray:
     world = problem.world
     return np.asarray(world.tool_pose(world.start)[:2, 3], dtype=float)
@@ -58,6 +69,9 @@ def _walk(problem, pick) -> tuple[dict, dict]:
     regions = _regions(problem)
     for step in _placing(problem):
         if step.target in regions:
+            if not problem.planar:  # an arm may turn what it carries; the disk may not
+                yaw[step.obj] = _fitting_yaw(problem.bodies[step.obj], yaw[step.obj],
+                                             regions[step.target])
             xy = np.asarray(pick(step, where, yaw, regions[step.target]), dtype=float)
         else:
             xy = where[step.target].copy()

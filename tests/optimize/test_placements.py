@@ -392,3 +392,16 @@ def test_library_tower_trajectory_keeps_it_aligned():
             turn = transforms.yaw_of(end[top]) - transforms.yaw_of(end[below])
             turn = (turn + math.pi / 4) % (math.pi / 2) - math.pi / 4
             assert offset < 4e-3 and abs(math.degrees(turn)) < 3.0, (top, offset, turn)
+
+
+def test_an_oblong_object_starts_turned_where_only_that_fits():
+    from types import SimpleNamespace
+
+    from tampcli.optimize.final_starts import _fitting_yaw
+
+    bar = SimpleNamespace(disk=False, half=(0.10, 0.02, 0.02))
+    across = SimpleNamespace(size=(0.08, 0.30))  # takes the bar only along y
+    along = SimpleNamespace(size=(0.30, 0.08))
+    assert _fitting_yaw(bar, 0.0, across) == pytest.approx(math.pi / 2)
+    assert _fitting_yaw(bar, 0.0, along) == 0.0
+    assert _fitting_yaw(bar, 0.3, SimpleNamespace(size=(0.05, 0.05))) == 0.3  # none fits
