@@ -24,7 +24,8 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from tampcli.render.inputs import load_inputs, mode_kind_of  # noqa: E402
-from tampcli.render.physics import drift_violations, replay_physics  # noqa: E402
+from tampcli.render.physics import replay_physics  # noqa: E402
+from tampcli.render.physics_values import drift_violations  # noqa: E402
 
 OUT = ROOT / "bench" / "results" / "physics.md"
 MAX_DRIFT, MAX_TURN = 0.01, 5.0

@@ -106,7 +106,8 @@ def _physics(args):
     """The physics replay of the solution, the objects it finds beyond tolerance, and
     the robot's passes into objects deeper than the replay grants."""
     from tampcli.render.inputs import load_inputs, mode_kind_of
-    from tampcli.render.physics import drift_violations, overlap_violations, replay_physics
+    from tampcli.render.physics import replay_physics
+    from tampcli.render.physics_values import drift_violations, overlap_violations
 
     inputs = load_inputs(args.plan)
     with _c_stdout_to_stderr():

@@ -10,14 +10,12 @@ as warnings, each `path:line:col: text`.
 
 from __future__ import annotations
 
-import re
-from bisect import bisect_right
 from dataclasses import dataclass
-from pathlib import Path
 
-from tampcli.errors import InputError, PDDLSemanticError, UnsupportedFeatureError
+from tampcli.errors import UnsupportedFeatureError
 from tampcli.pddl import ast
 from tampcli.pddl import requirements as reqs
+from tampcli.pddl.check_source import Source, located
 from tampcli.pddl.requirements import COST
 from tampcli.pddl.types import OBJECT, TypeHierarchy
 
@@ -40,7 +38,7 @@ def requirements(domain: ast.Domain, problem: ast.Problem | None = None) -> reqs
     return reqs.report(domain, problem)
 
 
-def _refuse_unsupported(report: reqs.RequirementReport, which: str, src: _Source) -> None:
+def _refuse_unsupported(report: reqs.RequirementReport, which: str, src: Source) -> None:
     # Only numeric fluents get this far: the other unsupported requirements
     # have no place in the AST and were refused while parsing.
     for requirement, span, where in report.unsupported:
@@ -53,7 +51,7 @@ def _refuse_unsupported(report: reqs.RequirementReport, which: str, src: _Source
 def _requirement_warnings(report: reqs.RequirementReport, domain: ast.Domain,
                           problem: ast.Problem | None) -> list[str]:
     def where(span, which):
-        return _where(domain.path if which == "domain" else problem.path, span)
+        return located(domain.path if which == "domain" else problem.path, span)
 
     warnings = [f"{where(span, which)}: unknown requirement {r}"
                 for r, span, which in report.unknown]
@@ -71,75 +69,6 @@ def _requirement_warnings(report: reqs.RequirementReport, domain: ast.Domain,
     return warnings
 
 
-def _where(path: str | None, span: ast.Span) -> str:
-    return f"{path or '<input>'}:{span.line}:{span.column}"
-
-
-# ---------------------------------------------------------------- locations
-
-
-class _Source:
-    """The text of a file, read only when an error needs its lines."""
-
-    _TOKEN = re.compile(r"\(|\)|;[^\n]*|[^\s();]+")
-
-    def __init__(self, path: str | None):
-        self.path = path
-        self._lines: list[str] | None = None
-        self._text = ""
-        self._starts: list[int] = []
-
-    def lines(self) -> list[str]:
-        """The lines without their "\n" (the only line end the lexer counts)."""
-        if self._lines is None:
-            try:
-                # Decoded as parser.read_file does: no newline translation, so
-                # offsets match the lexer's.
-                self._text = Path(self.path).read_bytes().decode("utf-8") if self.path else ""
-            except (OSError, UnicodeDecodeError):
-                self._text = ""
-            self._lines = self._text.split("\n")
-            pos = 0
-            for line in self._lines:
-                self._starts.append(pos)
-                pos += len(line) + 1
-        return self._lines
-
-    def error(self, message: str, span: ast.Span, item: int | None = None,
-              cls: type[InputError] = PDDLSemanticError) -> InputError:
-        """An error at `span`, or at the `item`-th element inside the list `span` opens
-        (0: its head, 1: its first argument...)."""
-        line, column = span.line, span.column
-        if item is not None:
-            line, column = self._item(span, item)
-        lines = self.lines()
-        source = lines[line - 1].removesuffix("\r") if 0 < line <= len(lines) else None
-        return cls(message, self.path, line or None, column or None, source)
-
-    def _item(self, span: ast.Span, item: int) -> tuple[int, int]:
-        lines = self.lines()
-        if not 0 < span.line <= len(lines):
-            return span.line, span.column
-        text = self._text
-        start = self._starts[span.line - 1] + span.column - 1
-        if text[start:start + 1] != "(":
-            return span.line, span.column
-        index = -1
-        for match in self._TOKEN.finditer(text, start + 1):
-            tok = match.group()
-            if tok.startswith(";"):
-                continue
-            if tok == ")" or tok == "(" and index >= 0:
-                break
-            index += 1
-            if index == item:
-                pos = match.start()
-                row = bisect_right(self._starts, pos) - 1
-                return row + 1, pos - self._starts[row] + 1
-        return span.line, span.column
-
-
-# ---------------------------------------------------------------- domain
 
 
 @dataclass(frozen=True)
@@ -153,7 +82,7 @@ class _Scope:
 class _DomainChecker:
     def __init__(self, domain: ast.Domain):
         self.domain = domain
-        self.src = _Source(domain.path)
+        self.src = Source(domain.path)
         self.hierarchy = TypeHierarchy.of(domain)
         self.predicates: dict[str, ast.PredicateDef] = {}
         self.functions: dict[str, ast.FunctionDef] = {}
@@ -203,7 +132,7 @@ class _DomainChecker:
             if first is not None:
                 parents = sorted({*first.types, *typed.types})
                 self.warnings.append(
-                    f"{_where(self.domain.path, typed.span)}: type {typed.name} is declared "
+                    f"{located(self.domain.path, typed.span)}: type {typed.name} is declared "
                     f"again (first on line {first.span.line}); it is read as a subtype of "
                     f"{' and '.join(parents)}")
                 continue
@@ -218,7 +147,7 @@ class _DomainChecker:
                                  seen[name].span)
         self.declared_types = frozenset(seen) | {OBJECT}
 
-    def _declared_types(self, typed: ast.Typed, src: _Source | None = None) -> None:
+    def _declared_types(self, typed: ast.Typed, src: Source | None = None) -> None:
         for t in typed.types:
             if t not in self.declared_types:
                 hint = "" if self.domain.types else " (the domain declares no :types)"
@@ -226,7 +155,7 @@ class _DomainChecker:
                                               typed.span)
 
     def _params(self, params, owner: str, outer: _Scope | None = None,
-                src: _Source | None = None, unique: bool = True) -> _Scope:
+                src: Source | None = None, unique: bool = True) -> _Scope:
         variables = dict(outer.variables) if outer else {}
         seen: set[str] = set()
         for typed in params:
@@ -247,7 +176,7 @@ class _DomainChecker:
 
     # ---- formulas and effects
 
-    def formula(self, f: ast.Formula, scope: _Scope, objects: dict, src: _Source) -> None:
+    def formula(self, f: ast.Formula, scope: _Scope, objects: dict, src: Source) -> None:
         if isinstance(f, ast.Atom):
             self.atom(f, scope, objects, src)
         elif isinstance(f, ast.Not):
@@ -262,7 +191,7 @@ class _DomainChecker:
             inner = self._params(f.params, scope.owner, scope, src)
             self.formula(f.body, inner, objects, src)
 
-    def atom(self, atom: ast.Atom, scope: _Scope, objects: dict, src: _Source) -> None:
+    def atom(self, atom: ast.Atom, scope: _Scope, objects: dict, src: Source) -> None:
         if atom.predicate == "=":
             if len(atom.args) != 2:
                 raise src.error(f"`=` takes 2 arguments, found {len(atom.args)}", atom.span)
@@ -292,7 +221,7 @@ class _DomainChecker:
                 raise src.error(f"argument {i} of {name}: {arg} is of type {_type_text(types)}, "
                                 f"expected {_type_text(param.types)}", span, i)
 
-    def _arg_types(self, arg, i, span, scope: _Scope, objects: dict, src: _Source):
+    def _arg_types(self, arg, i, span, scope: _Scope, objects: dict, src: Source):
         if arg.startswith("?"):
             if arg not in scope.variables:
                 raise src.error(f"free variable {arg}: not a parameter of {scope.owner} nor "
@@ -365,7 +294,7 @@ class _DomainChecker:
 class _ProblemChecker:
     def __init__(self, dom: _DomainChecker, problem: ast.Problem):
         self.dom, self.problem = dom, problem
-        self.src = _Source(problem.path)
+        self.src = Source(problem.path)
 
     def run(self) -> None:
         p, dom = self.problem, self.dom

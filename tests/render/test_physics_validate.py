@@ -9,7 +9,8 @@ from tower_solution import DOMAIN, TOWER, tower_solution
 
 from tampcli import solution as solution_file
 from tampcli.render.inputs import load_inputs, mode_kind_of
-from tampcli.render.physics import drift_violations, object_mass, replay_physics
+from tampcli.render.physics import replay_physics
+from tampcli.render.physics_values import drift_violations, object_mass
 from tests.conftest import ROOT
 
 TOWER_PROBLEM = TOWER / "tower4.pddl"
