@@ -45,9 +45,7 @@ from tampcli.geometry.parts import (
     rigid_groups,
     robot_parts,
 )
-from tampcli.geometry.scene import PANDA_READY
-
-SELF_MARGIN = 0.01  # m: link pairs this close in the default configuration are not checked
+from tampcli.geometry.self_pairs import SELF_MARGIN, self_collision_pairs
 
 __all__ = ["CollisionChecker", "Contact", "SELF_MARGIN"]
 
@@ -77,7 +75,8 @@ class CollisionChecker:
         self._static_link = np.array([self.group[p.link] == 0 for p in self.link_parts])
         self._in_tool_group = np.array([self.group[p.link] == self.tool_group
                                         for p in self.link_parts])
-        self.self_pairs = self._self_pairs()
+        self.self_pairs = self_collision_pairs(world, self.link_parts, self.group,
+                                               self._request)
         self._self_a = np.array([a for a, _ in self.self_pairs], dtype=int)
         self._self_b = np.array([b for _, b in self.self_pairs], dtype=int)
         # Flat list of body parts, for a vectorized broad phase.
@@ -111,35 +110,10 @@ class CollisionChecker:
 
     # ------------------------------------------------------------ setup
 
-    def _self_pairs(self) -> tuple[tuple[int, int], ...]:
-        """Link-part pairs checked for self-collision (see the module docstring)."""
-        chain = self.world.chain
-        parent_group = {i: self.group[link.parent] for i, link in enumerate(chain.links)
-                        if link.q_index >= 0}
-        query = Query(chain, chain.fk_list(self._default_configuration()), {})
-        pairs = []
-        for ia, pa in enumerate(self.link_parts):
-            for ib in range(ia + 1, len(self.link_parts)):
-                pb_ = self.link_parts[ib]
-                ga, gb = self.group[pa.link], self.group[pb_.link]
-                if ga == gb or parent_group.get(ga) == gb or parent_group.get(gb) == ga:
-                    continue
-                a, b = query.placed(ia, pa, None), query.placed(ib, pb_, None)
-                if signed_distance(self._request, a, pa.obj, b, pb_.obj)[0] > SELF_MARGIN:
-                    pairs.append((ia, ib))
-        return tuple(pairs)
-
     @property
     def self_pair_names(self) -> tuple[tuple[str, str], ...]:
         return tuple((self.link_parts[a].owner, self.link_parts[b].owner)
                      for a, b in self.self_pairs)
-
-    def _default_configuration(self) -> np.ndarray:
-        world = self.world
-        if world.scene.robot.model == "panda":
-            return np.array(PANDA_READY)
-        mid = 0.5 * (world.lower + world.upper)
-        return np.where(np.isfinite(mid), mid, 0.0)
 
     def _held(self, name: str) -> list[Part]:
         if name not in self._held_parts:
