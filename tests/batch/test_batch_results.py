@@ -130,10 +130,10 @@ def test_a_results_file_moved_with_its_set_matches_by_relative_path(tmp_path):
     with ResultsFile(str(old / "r.jsonl"), resume=False) as results:
         results.append(_result(str(old / "set" / "a.pddl"), cost=1.0))
         # Outside the file's folder: still relative to it.
-        results.append(_result(str(old.parent / "shared" / "b.pddl"), cost=2.0))
+        results.append(_result(str(old.parent / "common" / "b.pddl"), cost=2.0))
     new.mkdir(parents=True)
     (old / "r.jsonl").rename(new / "r.jsonl")
-    moved = [str(new / "set" / "a.pddl"), str(new.parent / "shared" / "b.pddl"),
+    moved = [str(new / "set" / "a.pddl"), str(new.parent / "common" / "b.pddl"),
              str(new / "set" / "c.pddl")]
     with ResultsFile(str(new / "r.jsonl"), resume=True) as results:
         latest = results.latest(moved)
