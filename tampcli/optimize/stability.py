@@ -163,7 +163,7 @@ def unstable(problem, step, poses: dict) -> list[str]:
     base, support, seen = step.obj, step.support, set()
     while support is not None and base not in seen:
         seen.add(base)
-        load = _load(base, movable, supports)
+        load = load_of(base, movable, supports)
         total = sum(bodies[n].mass for n in load)
         com = sum(bodies[n].mass * poses[n][:2, 3] for n in load) / total
         inset = margin(bodies[base], bodies[support])
@@ -178,7 +178,9 @@ def unstable(problem, step, poses: dict) -> list[str]:
     return out
 
 
-def _load(name: str, movable, supports: dict) -> list[str]:
+def load_of(name: str, movable, supports: dict) -> list[str]:
+    """`name` and everything among `movable` resting on it, directly or higher up
+    (what it carries)."""
     out, frontier = [name], [name]
     while frontier:
         below = frontier.pop()

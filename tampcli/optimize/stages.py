@@ -56,17 +56,6 @@ def _pose_of(problem, name: str, state: dict) -> PoseX:
     return state[name] if name in state else constant_pose(*problem.bodies[name].pose)
 
 
-def load_of(name: str, state: dict, supports: dict) -> list[str]:
-    """`name` and everything resting on it, directly or higher up (what it carries)."""
-    out, frontier = [name], [name]
-    while frontier:
-        below = frontier.pop()
-        above = [o for o in state if supports.get(o) == below and o not in out]
-        out += above
-        frontier += above
-    return out
-
-
 def _stability_rows(rows: Rows, problem, step, state: dict, supports: dict) -> None:
     """The placed object and every body under it keep their loads' centre of mass
     over their supports' top faces (stability.py)."""
@@ -74,7 +63,7 @@ def _stability_rows(rows: Rows, problem, step, state: dict, supports: dict) -> N
     base, support, seen = step.obj, step.support, set()
     while support is not None and base not in seen:
         seen.add(base)
-        load = [(state[n], bodies[n].mass) for n in load_of(base, state, supports)]
+        load = [(state[n], bodies[n].mass) for n in S.load_of(base, state, supports)]
         S.com_on_face(rows.ineq, step.name, load, bodies[base], _pose_of(problem, support, state),
                       bodies[support])
         if support not in state:
