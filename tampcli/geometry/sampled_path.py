@@ -127,7 +127,11 @@ def _solve_with_restarts(setup, time_limit: float) -> bool:
 
 
 def resample(path: np.ndarray, count: int) -> np.ndarray:
-    """`count` waypoints evenly spaced by joint-space arc length along `path` (ends kept)."""
+    """`count` waypoints along `path` (ends kept), evenly spaced by joint-space arc
+    length, except that every vertex of the path is one of them when there are no
+    more vertices than `count`: a corner cut between two waypoints could run into
+    the obstacle the planner went around. Each segment then gets a share of the
+    points proportional to its length (at least one step)."""
     path = np.asarray(path, float)
     if count < 2:
         raise ValueError("a path has at least two waypoints")
@@ -135,5 +139,27 @@ def resample(path: np.ndarray, count: int) -> np.ndarray:
     along = np.concatenate([[0.0], np.cumsum(steps)])
     if along[-1] == 0.0:
         return np.repeat(path[:1], count, axis=0)
-    at = np.linspace(0.0, along[-1], count)
+    if len(path) > count:
+        at = np.linspace(0.0, along[-1], count)
+    else:
+        at = np.concatenate([np.linspace(a, b, n, endpoint=False) for a, b, n in
+                             zip(along, along[1:], _shares(steps, count - 1), strict=False)]
+                            + [along[-1:]])
     return np.stack([np.interp(at, along, path[:, j]) for j in range(path.shape[1])], axis=1)
+
+
+def _shares(lengths: np.ndarray, total: int) -> np.ndarray:
+    """`total` steps over segments of these lengths: one each, the rest by largest
+    remainder in proportion to length."""
+    n = np.ones(len(lengths), dtype=int)
+    extra = total - len(lengths)
+    if extra > 0 and lengths.sum() > 0:
+        want = lengths / lengths.sum() * total - 1.0
+        floor = np.clip(np.floor(want), 0, None).astype(int)
+        while floor.sum() > extra:
+            floor[int(np.argmax(floor))] -= 1
+        n += floor
+        order = np.argsort(-(want - floor))
+        for i in order[:extra - int(floor.sum())]:
+            n[i] += 1
+    return n

@@ -191,6 +191,15 @@ def within_reach(rows: RowSet, step: str, P: PoseX, centre, reach: float) -> Non
     rows.add(np.array([reach - n]), P.through(g), Label(step, "out of the robot's reach"))
 
 
+def near(rows: RowSet, step: str, P: PoseX, centre_xy, radius: float) -> None:
+    """P's (x, y) within `radius` of centre_xy (squared: smooth at the centre)."""
+    d = P.pos[:2] - np.asarray(centre_xy, dtype=float)
+    g = _g(1)
+    g[0, 0:2] = -2.0 * d
+    rows.add(np.array([radius * radius - float(d @ d)]), P.through(g),
+             Label(step, "off the spot clear of a later motion"))
+
+
 def same_pose(rows: RowSet, ineq: RowSet, step: str, H: PoseX, target: PoseX, planar: bool,
               yaw: bool) -> None:
     """The gripped object's pose (from the tool) matches where the object is."""

@@ -13,6 +13,7 @@ import time
 import numpy as np
 
 from tampcli.geometry.sampled_path import SamplingOptions, resample, sampled_path
+from tampcli.optimize import relocate
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible
 from tampcli.optimize.path import (
@@ -25,9 +26,13 @@ from tampcli.optimize.path import (
 
 LAZY_BAND = 0.01  # m: a point between waypoints this close to its limit gets its rows
 LAZY_ROUNDS = 3
+# Of a motion's sampling time: the first try with everything in place, and (where it
+# fails) as much again with the objects this skeleton moved left out (relocate.find);
+# the rest for everything in place again.
+FIRST_SHARE = 0.25
 
 
-def solve_motion(run, ctx, T: int, checks: int, label: str):
+def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """One motion's path NLP under the margin schedule.
 
     From the via-point start with the options' margin; where that fails, from
@@ -36,13 +41,19 @@ def solve_motion(run, ctx, T: int, checks: int, label: str):
     stalls), first with the margin, then with `tight_margin`, so a passage
     narrower than twice the margin is still passed. The zero-margin check at
     10x (`verify`) judges what comes out. Returns the first solved outcome, or
-    the last failure.
+    the last failure. `warm`: interior waypoints (T-1, n) of an earlier solve of
+    this motion, tried first (with the tight margin too: it solved with one of them).
     """
     problem = run.problem
     opts = problem.options
     held_height = 0.0
     if ctx.held is not None:
         held_height = 2 * problem.bodies[ctx.held.name].half[2]
+    if warm is not None:
+        for margin in (opts.margin, opts.tight_margin):
+            out = _solve_phase(run, ctx, T, checks, label, np.asarray(warm).reshape(-1), margin)
+            if out.status == "solved" or time.perf_counter() > run.deadline:
+                return out
     if problem.motions[ctx.index].pushes:
         # A push slides along its support in a straight line (a bend would be a drag):
         # no lift above the obstacles, no detour around the object it pushes.
@@ -53,7 +64,15 @@ def solve_motion(run, ctx, T: int, checks: int, label: str):
     out = _solve_phase(run, ctx, T, checks, label, x0, opts.margin)
     if out.status == "solved" or time.perf_counter() > run.deadline:
         return out
-    sampled = _sampled_start(run, ctx, T)
+    sampled = _sampled_start(run, ctx, T, FIRST_SHARE)
+    if sampled is None:
+        # No path past the objects this skeleton set down earlier: is one of them in
+        # the way (the caller then moves it), or is the passage just hard to find?
+        share = FIRST_SHARE * problem.options.sampling_time
+        run.obstruction = relocate.find(run, ctx, min(share, run.deadline - time.perf_counter()))
+        if run.obstruction is not None:
+            return out
+        sampled = _sampled_start(run, ctx, T, 1.0 - FIRST_SHARE)
     tries = [(sampled, opts.margin), (sampled, opts.tight_margin)] if sampled is not None \
         else [(x0, opts.tight_margin)]
     for start, margin in tries:
@@ -78,11 +97,12 @@ def _clear_anyway(run, ctx, T: int, checks: int, label: str, out):
     return out
 
 
-def _sampled_start(run, ctx, T: int):
-    """(T-1) * n interior waypoints resampled from a sampled path, or None."""
+def _sampled_start(run, ctx, T: int, share: float):
+    """(T-1) * n interior waypoints resampled from a sampled path found within `share`
+    of the sampling time, or None."""
     problem = run.problem
     opts = problem.options
-    budget = min(opts.sampling_time, run.deadline - time.perf_counter())
+    budget = min(share * opts.sampling_time, run.deadline - time.perf_counter())
     if budget <= 0:
         return None
     world = problem.world

@@ -15,6 +15,7 @@ import time
 
 import numpy as np
 
+from tampcli.optimize import relocate
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.final_starts import starts
@@ -27,7 +28,12 @@ from tampcli.optimize.options import OptimizeOptions
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import STAGES, TrajectoryResult
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
-from tampcli.optimize.values import Keyframes, placement_blocks, placements_from_blocks
+from tampcli.optimize.values import (
+    Keyframes,
+    Placement,
+    placement_blocks,
+    placements_from_blocks,
+)
 from tampcli.optimize.world_state import grip_of, reach_of
 
 GRIP_BOUND = 4 * math.pi
@@ -54,6 +60,8 @@ class _Run:
         self.checker = problem.checker
         self.start = np.asarray(problem.world.start, dtype=float)
         self.rng = np.random.default_rng(problem.options.seed)
+        self.obstruction = None  # relocate.Obstruction of the last motion that failed
+        self.anchors = None  # relocate.Relocation.anchors the keyframe NLP keeps to
 
     def result(self, status: str, **fields) -> TrajectoryResult:
         fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")
@@ -134,17 +142,23 @@ def _beyond_reach(problem) -> str | None:
     return None
 
 
-def _placements(run: _Run):
+def _placements(run: _Run, origins: dict | None = None, like: dict | None = None):
     """Run the final NLP from each of final_starts.starts until one solves; returns
     (outcome or None when there is nothing to place, values). Its outcome depends on
-    the skeleton alone (no warm start from another skeleton: see final_starts)."""
+    the skeleton alone (no warm start from another skeleton: see final_starts).
+    Given `origins` (step -> (x, y)), from there alone, at the yaws of `like`."""
     problem = run.problem
     layout = final_layout(problem)
     if layout.size == 0:
         return None, {}
     bounds = [(-1e3, 1e3)] * layout.size
     best = None
-    for start in starts(problem):
+    if origins is not None:
+        given = {i: Placement(float(o[0]), float(o[1]), like[i].yaw) for i, o in origins.items()}
+        candidates = [lambda _problem: (given, origins)]
+    else:
+        candidates = starts(problem)
+    for start in candidates:
         placements, origins = start(problem)
         out = run.nlp(lambda x, origins=origins: final_rows(problem, layout.unpack(x), origins),
                       layout, layout.pack(placement_blocks(placements)), bounds)
@@ -190,16 +204,19 @@ def _keyframes(run: _Run, warm) -> TrajectoryResult:
     return result
 
 
-def _keyframes_with(run: _Run, warm, grips: dict[int, float] | None = None
-                    ) -> TrajectoryResult:
-    """`grips`: step -> a grip parameter the NLP keeps (the NLP's choice otherwise)."""
+def _keyframes_with(run: _Run, warm, grips: dict[int, float] | None = None,
+                    placements: dict | None = None) -> TrajectoryResult:
+    """`grips`: step -> a grip parameter the NLP keeps (the NLP's choice otherwise);
+    `placements`: the final stage's values to use (solved from scratch otherwise)."""
     problem = run.problem
     why = _too_small(problem) or _beyond_reach(problem)
     if why:
         return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
     have = warm is not None and warm.placements and all(
         s.index in warm.placements for s in problem.steps if s.kind.places)
-    if have and warm.names == problem.names:
+    if placements is not None:
+        pass
+    elif have and warm.names == problem.names:
         placements = warm.placements
     else:
         out, placements = _placements(run)
@@ -232,7 +249,7 @@ def _keyframes_with(run: _Run, warm, grips: dict[int, float] | None = None
 
         def evaluate(x, choices=choices):
             return keyframe_rows(problem, layout.unpack(x), choices, run.kin, run.checker,
-                                 run.start)
+                                 run.start, anchors=run.anchors)
 
         out = run.nlp(evaluate, layout, layout.pack(guess.blocks()), bounds)
         if best is None or (out.status == "solved") or out.violation < best[0].violation:
@@ -271,7 +288,8 @@ def _tight_keyframes(run: _Run, layout, bounds, out, choices):
         opts, margin=opts.tight_margin))
 
     def evaluate(x):
-        return keyframe_rows(tight, layout.unpack(x), choices, run.kin, run.checker, run.start)
+        return keyframe_rows(tight, layout.unpack(x), choices, run.kin, run.checker, run.start,
+                             anchors=run.anchors)
 
     if violation_at(evaluate, layout, out.x) >= out.violation - FEASIBILITY:
         return out
@@ -307,9 +325,35 @@ def _path(run: _Run, warm) -> TrajectoryResult:
             start = _keyframes_with(run, warm, grips)
             run.stage = "path"
         if start.solved:
-            found = _path_through(run, start)
+            found = _relocated(run, warm, grips, start, _path_through(run, start))
             result = found if result is None or found.solved else result
     return result
+
+
+RELOCATIONS = 2  # rounds of objects moved out of a failed motion's way, per grip choice
+
+
+def _relocated(run: _Run, warm, grips, kfr, found: TrajectoryResult) -> TrajectoryResult:
+    """`found`, or where its motion failed for an object this skeleton set down in
+    the way (relocate), the path through placements moved clear of it."""
+    for _ in range(RELOCATIONS):
+        obstruction, run.obstruction = run.obstruction, None
+        if found.solved or obstruction is None or time.perf_counter() > run.deadline:
+            return found
+        for move in relocate.relocations(run, obstruction, kfr.placements):
+            out, placements = _placements(run, move.origins, kfr.placements)
+            if out.status != "solved" or not relocate.still_clear(run, obstruction, placements):
+                continue
+            run.stage, run.anchors = "keyframes", move.anchors
+            again = _keyframes_with(run, warm, grips, placements)
+            run.stage, run.anchors = "path", None
+            if again.solved:
+                kfr, found = again, _path_through(run, again)
+                break
+        else:
+            return found
+    run.obstruction = None
+    return found
 
 
 def _face_grips(problem, kfr):
@@ -354,7 +398,10 @@ def _path_through(run: _Run, kfr) -> TrajectoryResult:
         for ctx in contexts:
             if attempt and ctx.index not in failing:
                 continue
-            out = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index))
+            # A motion sampled finer starts from its last solution (collision-free at
+            # the coarser samples), not from scratch.
+            out = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index),
+                               warm=waypoints.get(ctx.index))
             if out.status != "solved":
                 label = _phase_label(problem, ctx.index)
                 return run.result(out.status, violation=out.violation,

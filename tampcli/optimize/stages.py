@@ -161,8 +161,9 @@ class KeyframeWalk:
     """The keyframe NLP's walk: resting poses, what is held, pending collision queries."""
 
     def __init__(self, problem: TrajectoryProblem, vals: dict, choices: dict, tool_frames,
-                 collisions: bool):
+                 collisions: bool, anchors: dict | None = None):
         self.problem = problem
+        self.anchors = anchors or {}  # step index -> ((x, y), radius) its placement keeps to
         self.planar = problem.planar
         self.vals = vals
         self.choices = choices
@@ -205,10 +206,15 @@ class KeyframeWalk:
         """The step's object rests at P from here on (it joins `state`)."""
         _placement_rows(self.rows, self.problem, step, P, self.state, self.heights,
                         self.supports)
+        if step.index in self.anchors:
+            C.near(self.rows.ineq, step.name, P, *self.anchors[step.index])
 
 
 def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, checker,
-                  start: np.ndarray, collisions: bool = True) -> Rows:
+                  start: np.ndarray, collisions: bool = True, anchors: dict | None = None
+                  ) -> Rows:
+    """`anchors`: step index -> ((x, y), radius): placements kept near a spot
+    (optimize/relocate: clear of a later motion)."""
     opts = problem.options
     bodies = list(problem.bodies)
 
@@ -217,7 +223,7 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
 
     # The tool frames of all keyframes at once (one batched forward kinematics).
     tool_frames = kin.frames([q_of(k) for k in range(problem.n_keyframes)])
-    walk = KeyframeWalk(problem, vals, choices, tool_frames, collisions)
+    walk = KeyframeWalk(problem, vals, choices, tool_frames, collisions, anchors)
     for step in problem.steps:
         step.kind.keyframe_rows(walk, step)
     rows, pending = walk.rows, walk.pending

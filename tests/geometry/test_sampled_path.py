@@ -111,3 +111,15 @@ def test_nothing_reaches_the_terminal_not_even_at_exit():
                          cwd=ROOT, timeout=120)
     assert run.returncode == 0, run.stderr
     assert run.stdout == "" and run.stderr == ""
+
+
+def test_resample_keeps_every_vertex_when_there_are_waypoints_enough():
+    # A corner cut between two waypoints would run into what the planner went around.
+    path = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [1.1, 1.0]])
+    out = resample(path, 11)
+    assert len(out) == 11
+    for vertex in path:
+        assert np.min(np.linalg.norm(out - vertex, axis=1)) < 1e-12
+    steps = np.linalg.norm(np.diff(out, axis=0), axis=1)
+    assert steps.max() <= 0.26  # shares in proportion to length: 5, 4 and 1 steps
+    np.testing.assert_allclose(resample(path, 3)[[0, -1]], path[[0, -1]])
