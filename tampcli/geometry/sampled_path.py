@@ -8,10 +8,11 @@ NLP then smooths. The path is only a start: the NLP and the zero-margin
 check at 10x resolution stay the judges of what is returned.
 
 Validity of a configuration: every covered pair at least `clearance` apart
-(robot links, a held object, self-collision). The contacts a motion starts
-or ends in (the hand touching what it is about to grasp, a held object on
-the surface it is put on) are allowed within `endpoint_slack` of either end,
-in joint space: the NLP's contact rules decide how deep they may go.
+(robot links, a held object, self-collision). Within `endpoint_slack` of
+either end (in joint space), a pair closer than that at the end (the hand
+touching what it is about to grasp or has just let go, a held object on the
+surface it is put on, a keyframe in a slot) may stay as close as it is
+there, but no closer: a path may not cut through the block just set down.
 
 OMPL prints its log on the terminal by default: the level is set to none
 for the query, and every OMPL object is released before returning (nanobind
@@ -27,6 +28,9 @@ from dataclasses import dataclass
 import numpy as np
 
 _FIRST_SLICE = 0.25  # s: RRT-Connect's first run before a restart
+# m: how much deeper than at the nearer end a pair may be near an end (numerical noise
+# on a touching contact; it may not cut through what the motion starts or ends at).
+CONTACT_DEPTH = 2e-4
 
 
 @dataclass(frozen=True)
@@ -67,12 +71,23 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
     lower, upper = np.asarray(lower, float), np.asarray(upper, float)
     n = len(q_start)
 
+    horizon = options.clearance + 0.01
+
+    def pairs(q: np.ndarray) -> dict:
+        return {(c.a, c.b): c.distance
+                for c in checker.distances(q, body_poses, held, ignore, horizon)}
+
+    at_start, at_goal = pairs(q_start), pairs(q_goal)
+
     def valid(q: np.ndarray) -> bool:
-        if min(np.linalg.norm(q - q_start), np.linalg.norm(q - q_goal)) <= options.endpoint_slack:
-            return True
-        d = checker.min_distance(q, body_poses, held, ignore, static=False,
-                                 horizon=options.clearance + 0.01)
-        return bool(d >= options.clearance)
+        ends = [at for end, at in ((q_start, at_start), (q_goal, at_goal))
+                if np.linalg.norm(q - end) <= options.endpoint_slack]
+        for pair, d in pairs(q).items():
+            floor = min([options.clearance] + [at.get(pair, np.inf) - CONTACT_DEPTH
+                                               for at in ends])
+            if d < floor:
+                return False
+        return True
 
     previous = ou.getLogLevel()
     ou.setLogLevel(ou.LOG_NONE)

@@ -26,6 +26,7 @@ from tampcli.optimize.path import (
 
 LAZY_BAND = 0.01  # m: a point between waypoints this close to its limit gets its rows
 LAZY_ROUNDS = 3
+SEED_BAND = 0.03  # m: a point between waypoints this close at the start has rows from the first solve
 # Of a motion's sampling time: the first try with everything in place, and (where it
 # fails) as much again with the objects this skeleton moved left out (relocate.find);
 # the rest for everything in place again.
@@ -139,10 +140,20 @@ def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
     bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
                       strict=True))
     coarse, layout = rows(0)
+    kept: set[float] = set()
+    if checks:
+        # Points between waypoints already near something at the start keep their rows
+        # from the first solve: with waypoints only, SLSQP's first steps can put two
+        # waypoints on either side of a thin obstacle (a block just set down), and the
+        # rows added later cannot pull the segment back around it.
+        slack = sample_clearance(problem, m, ctx.q_a, ctx.q_b, x0, ctx.held, ctx.moved,
+                                 run.checker, T, checks, margin, SEED_BAND, own)
+        kept = {tau for tau, d in slack.items() if d < SEED_BAND and tau != int(tau)}
+    if kept:
+        coarse, _ = rows(checks, lambda tau, kept=frozenset(kept): tau == int(tau) or tau in kept)
     out = run.nlp(coarse, layout, x0, bounds)
     if checks == 0:
         return out
-    kept: set[float] = set()
     for _ in range(LAZY_ROUNDS):
         if out.status != "solved":
             return out
