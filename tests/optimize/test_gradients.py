@@ -110,6 +110,27 @@ def test_keyframe_rows_without_collisions(wall):
     assert np.max(np.abs(eq)) > 1e-3  # away from the solution: the test sees real slopes
 
 
+def test_keyframe_rows_with_an_anchored_placement(wall):
+    """A placement kept near a spot (optimize/relocate's anchors): the disk row."""
+    scene, modes, world = wall
+    problem = lower(ops("(pick a start)", "(place a goal)"), scene, modes, world)
+    placements, _ = final_guess(problem)
+    vals, choices = keyframe_guess(problem, placements, world.start,
+                                   np.random.default_rng(0))
+    layout = keyframe_layout(problem)
+    x = layout.pack(vals.blocks()) + np.random.default_rng(3).normal(0, 0.05, layout.size)
+    kin = Kinematics(world)
+    spot = np.array([placements[1].x + 0.03, placements[1].y - 0.02])
+
+    def rows(v, anchors):
+        return keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
+                             collisions=False, anchors=anchors)
+
+    _, free = _check(lambda v: rows(v, None), layout, x)
+    _, anchored = _check(lambda v: rows(v, {1: (spot, 0.05)}), layout, x)
+    assert len(anchored) == len(free) + 1
+
+
 def test_keyframe_rows_planar_push_with_grip_parameter(planar):
     scene, modes, world = planar
     problem = lower(ops("(push o start goal floor)"), scene, modes, world)
