@@ -24,6 +24,32 @@ from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
 
+def _clear_contact_angle(walk, step, obj_pose, grip) -> float:
+    """The planar robot's contact angle to start from: facing where the robot comes
+    from, unless the robot there would stand in something (a wall beside the
+    object, a neighbour in a pen); then the clear face middle nearest that
+    direction (eight directions round a disk)."""
+    toward = walk.angle(obj_pose[:2, 3] - walk.world.tool_pose(walk.q_prev)[:2, 3])
+    checker = walk.problem.checker
+    if checker is None:
+        return toward
+    half = getattr(grip, "half", None)
+    spokes = 4 if half is not None else 8
+    base = getattr(grip, "yaw", 0.0)
+    candidates = [toward] + [base + j * 2 * math.pi / spokes for j in range(spokes)]
+    others = {n: p for n, p in walk.poses.items() if n != step.obj}
+    margin = walk.problem.options.margin
+
+    def score(phi):
+        q = walk.planar_q(obj_pose[:3, 3], grip, phi)
+        d = checker.min_distance(q, others, None, frozenset({step.obj}), static=False,
+                                 horizon=margin)
+        turn = abs((phi - toward + math.pi) % (2 * math.pi) - math.pi)
+        return (d < margin, turn)
+
+    return min(candidates, key=score)
+
+
 class Grasp(ModeKind):
     """`families`: the grasp families (grasp_families.FAMILIES) a lowered step may
     use; the registered kind allows every one, a step's kind those its action
@@ -80,12 +106,11 @@ class Grasp(ModeKind):
         (k,) = step.keyframes
         obj_pose = walk.poses[step.obj]
         if walk.planar:
-            p_prev = walk.world.tool_pose(walk.q_prev)[:2, 3]
-            phi = walk.angle(obj_pose[:2, 3] - p_prev) + (
-                walk.rng.normal(0.0, 4 * walk.jitter) if walk.jitter else 0.0)
             walk.choices[step.index] = GripChoice(z=float(obj_pose[2, 3]),
                                                   yaw=transforms.yaw_of(obj_pose))
             grip = walk.grip_of(step)
+            phi = _clear_contact_angle(walk, step, obj_pose, grip) + (
+                walk.rng.normal(0.0, 4 * walk.jitter) if walk.jitter else 0.0)
             walk.grip[step.index] = float(phi)
             q = walk.planar_q(obj_pose[:3, 3], grip, phi)
         else:
