@@ -77,16 +77,6 @@ class KktStages:
         return [(f.name, getattr(self, f.name)) for f in fields(self)
                 if getattr(self, f.name) is not None]
 
-    @property
-    def deepest(self) -> KktCertificate | None:
-        """The certificate of the last stage that has one."""
-        found = self.items()
-        return found[-1][1] if found else None
-
-    @property
-    def dual_feasible(self) -> bool:
-        return all(c.dual_feasible for _, c in self.items())
-
 
 def stages_to_dict(stages: KktStages) -> dict:
     return {stage: certificate_to_dict(c) for stage, c in stages.items()}
