@@ -131,3 +131,13 @@ def test_a_bad_certificate_is_located(solved, tmp_path, change, key, words):
         read_solution(path)
     text = info.value.render()
     assert text.startswith(f"{path}: {key}: ") and words in text, text
+
+
+def test_docs_name_every_key_of_a_certificate(solved):
+    _, sol, _ = solved
+    text = (ROOT / "docs" / "formats.md").read_text()
+    section = text[text.index("**KKT certificates.**"):]
+    table = section[section.index("| key | value |"):]
+    table = table[:table.index("\n\n")]
+    documented = re.findall(r"^\| `(\w+)` \|", table, re.MULTILINE)
+    assert documented == list(sol["kkt"]["path"])
