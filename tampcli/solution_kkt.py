@@ -19,13 +19,13 @@ KINDS = ("eq", "ineq", "bound")
 
 @dataclass(frozen=True)
 class ActiveConstraint:
-    """Constraint rows of one name that are active at the answer.
+    """Constraint rows of one name, active at the answer, whose multipliers have one sign.
 
     name: the rows' label, as the worst-row messages spell it
         ("(place a goal): overlaps b"), or "k2 at its lower bound" for a
         variable block at a bound.
     kind: "eq", "ineq" or "bound".
-    rows: how many rows of that name are active.
+    rows: how many rows the group has.
     multiplier: of those rows' multipliers, the one largest in magnitude (signed).
     """
 
@@ -46,10 +46,11 @@ class KktCertificate:
     violation: the largest constraint violation (m or rad).
     complementarity: the largest |mu_i g_i| over the active rows.
     min_multiplier: the least inequality or bound multiplier of the reported fit
-        (the signed fit when it does as well as the free one, else the free
-        fit); negative when dual feasibility fails. None: nothing active.
-    dual_feasible: the signed fit is as good as the free one: multipliers of the
-        right sign explain the gradient.
+        (the signed fit when dual feasible, else the free fit); negative when
+        dual feasibility fails. None: no inequality or bound active.
+    dual_feasible: the signed fit leaves at most about twice the free fit's
+        residual (optimize/kkt.py): multipliers of the right sign explain the
+        gradient.
     nlps: NLP answers combined (a path stage solves one NLP per motion).
     active: the active constraints by name, largest multiplier first.
     """

@@ -107,6 +107,36 @@ def test_dependent_rows_with_a_nonnegative_fit_are_dual_feasible():
     assert c.min_multiplier >= 0.0
 
 
+def _two_rows(grad, jin):
+    """Two active inequality rows of one name at the origin."""
+    return certificate(np.asarray(grad, dtype=float), np.zeros(0), np.zeros((0, 2)),
+                       np.zeros(2), np.asarray(jin, dtype=float), [], [ROW, ROW], np.zeros(2),
+                       FREE, BLOCKS)
+
+
+def test_a_negative_multiplier_that_only_trims_the_residual_is_not_a_wrong_sign():
+    """grad f = (1, 0.1), one active row (0, -1): mu = -0.1 takes the residual from
+    1.005 to 1; short of convergence that is noise, and mu >= 0 is reported."""
+    c = certificate(np.array([1.0, 0.1]), np.zeros(0), np.zeros((0, 2)), np.zeros(1),
+                    np.array([[0.0, -1.0]]), [], [ROW], np.zeros(2), FREE, BLOCKS)
+    assert c.free_stationarity == pytest.approx(1.0)
+    assert c.stationarity == pytest.approx(math.hypot(1.0, 0.1))
+    assert c.dual_feasible and c.min_multiplier == 0.0
+
+
+def test_a_wrong_signed_row_is_not_hidden_among_its_namesakes():
+    """grad f = (1, 1) from rows (1, 0) and (0, -1) of one name: mu = (1, -1). The
+    two multipliers are reported apart, so the one of the wrong sign shows."""
+    c = _two_rows([1.0, 1.0], [[1.0, 0.0], [0.0, -1.0]])
+    assert not c.dual_feasible and c.min_multiplier == pytest.approx(-1.0)
+    assert c.stationarity == pytest.approx(1.0)
+    assert sorted(a.multiplier for a in c.active) == pytest.approx([-1.0, 1.0])
+    assert {a.name for a in c.active} == {"(toy): x + y against 1"}
+    same = _two_rows([1.0, 1.0], [[1.0, 0.0], [0.0, 1.0]])
+    assert same.active == (ActiveConstraint("(toy): x + y against 1", "ineq", 2,
+                                            pytest.approx(1.0)),)
+
+
 def _toy(x):
     """min x^2 + y^2 s.t. x + y >= 1 (active) and x - y >= -5 (inactive), as the
     stages write their rows."""
@@ -142,7 +172,10 @@ def test_certificates_combine_to_the_worst_of_each_measure():
                                                                                1e-5)
     assert c.complementarity == 1e-9 and c.min_multiplier == -0.2
     assert not c.dual_feasible and c.nlps == 2
-    assert c.active == (ActiveConstraint("m0: collision a vs b", "ineq", 3, -0.7),
+    assert c.active == (ActiveConstraint("m0: collision a vs b", "ineq", 1, -0.7),
+                        ActiveConstraint("m0: collision a vs b", "ineq", 2, 0.5),
                         ActiveConstraint("m1: upright", "eq", 1, 0.1))
+    again = combined([a, a])
+    assert again.active == (ActiveConstraint("m0: collision a vs b", "ineq", 4, 0.5),)
     assert combined([None]) is None
 
