@@ -101,15 +101,20 @@ def _block_of(j: int, blocks: dict[str, slice]) -> str:
 
 
 def _grouped(names, kinds, y) -> tuple[ActiveConstraint, ...]:
-    """One entry per name, kind and sign of the multiplier (a row of the wrong sign is
-    not hidden among its namesakes): its row count and its largest multiplier."""
+    """One entry per name, kind and, for an inequality or bound, sign of the multiplier
+    (a row of the wrong sign is not hidden among its namesakes): its row count and
+    its largest multiplier."""
     groups: dict[tuple[str, str, bool], tuple[int, float]] = {}
     for name, kind, value in zip(names, kinds, y, strict=True):
-        key = (name, kind, bool(value < 0))
+        key = (name, kind, _wrong(kind, value))
         rows, best = groups.get(key, (0, 0.0))
         groups[key] = (rows + 1, float(value) if abs(value) > abs(best) else best)
     return _ordered(ActiveConstraint(name, kind, rows, best)
                     for (name, kind, _), (rows, best) in groups.items())
+
+
+def _wrong(kind: str, multiplier: float) -> bool:
+    return kind != "eq" and bool(multiplier < 0)
 
 
 def _ordered(active) -> tuple[ActiveConstraint, ...]:
@@ -126,7 +131,7 @@ def combined(certificates) -> KktCertificate | None:
     groups: dict[tuple[str, str, bool], ActiveConstraint] = {}
     for c in found:
         for a in c.active:
-            key = (a.name, a.kind, a.multiplier < 0)
+            key = (a.name, a.kind, _wrong(a.kind, a.multiplier))
             old = groups.get(key)
             if old is not None:
                 a = ActiveConstraint(a.name, a.kind, old.rows + a.rows,

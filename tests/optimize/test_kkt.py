@@ -135,6 +135,10 @@ def test_a_wrong_signed_row_is_not_hidden_among_its_namesakes():
     same = _two_rows([1.0, 1.0], [[1.0, 0.0], [0.0, 1.0]])
     assert same.active == (ActiveConstraint("(toy): x + y against 1", "ineq", 2,
                                             pytest.approx(1.0)),)
+    # Equality multipliers have no wrong sign: one group whatever their signs.
+    eq = certificate(np.array([1.0, 1.0]), np.zeros(2), np.array([[1.0, 0.0], [0.0, -1.0]]),
+                     np.zeros(0), np.zeros((0, 2)), [ROW, ROW], [], np.zeros(2), FREE, BLOCKS)
+    assert eq.dual_feasible and len(eq.active) == 1 and eq.active[0].rows == 2
 
 
 def _toy(x):
