@@ -74,6 +74,10 @@ class KktStages:
     keyframes: KktCertificate | None = None
     path: KktCertificate | None = None
 
+    def of(self, stage: str | None) -> KktCertificate | None:
+        """The certificate of `stage` (None for no stage, or one without)."""
+        return dict(self.items()).get(stage)
+
     def items(self) -> list[tuple[str, KktCertificate]]:
         return [(f.name, getattr(self, f.name)) for f in fields(self)
                 if getattr(self, f.name) is not None]

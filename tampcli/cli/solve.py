@@ -191,7 +191,7 @@ CARRIES = 1e-9  # a multiplier above this (in magnitude) carries part of the gra
 
 def _kkt(record) -> str:
     """The skeleton table's KKT cell: see KKT_CAPTION."""
-    c = getattr(record.kkt, record.stage) if record.stage else None
+    c = record.kkt.of(record.stage)
     if c is None:
         return "-"
     return f"{c.stationarity:.1e}" + ("" if c.dual_feasible else " !")
