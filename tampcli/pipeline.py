@@ -324,7 +324,7 @@ def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result:
         trajectory=tuple(tuple(float(v) for v in q) for q in best.trajectory),
         phases=tuple(p if isinstance(p, Phase) else Phase(*p) for p in best.phases),
         objects={k: [list(map(float, pose)) for pose in v] for k, v in best.object_poses.items()},
-        **common)
+        kkt=best.kkt, **common)
 
 
 def _stats(timers: Timers, extra: dict) -> dict:

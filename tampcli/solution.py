@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any
 
 from tampcli.errors import SolutionFileError
+from tampcli.solution_kkt import KktStages, stages_to_dict
 
 VERSION = 1
 STATUSES = ("solved", "unsolvable", "limit")
@@ -47,6 +48,7 @@ class SkeletonRecord:
     total_cost: float | None = None
     seconds: float = 0.0
     reason: str | None = None
+    kkt: KktStages = KktStages()  # of each stage it solved
 
 
 @dataclass(frozen=True)
@@ -69,6 +71,7 @@ class Solution:
     modes: str | None = None
     objective: float | None = None  # cost + symbolic_weight * symbolic_cost
     symbolic_weight: float | None = None
+    kkt: KktStages = KktStages()  # the answer's NLPs, one certificate per stage
 
     @property
     def solved(self) -> bool:
@@ -120,10 +123,12 @@ def to_dict(solution: Solution) -> dict[str, Any]:
                 "total_cost": _num(s.total_cost),
                 "seconds": round(s.seconds, 4),
                 "reason": s.reason,
+                "kkt": stages_to_dict(s.kkt),
             }
             for s in solution.skeletons
         ],
         "stats": solution.stats,
+        "kkt": stages_to_dict(solution.kkt),
     }
 
 

@@ -17,6 +17,7 @@ from pathlib import Path
 
 from tampcli.errors import SolutionFileError
 from tampcli.solution import STATUSES, VERSION, Phase, SkeletonRecord, Solution
+from tampcli.solution_kkt import stages_from_dict
 
 # Duplicated from geometry.world (which imports PyBullet) so reading a file needs
 # no simulator; tests/test_solution_reader.py checks the two agree.
@@ -87,7 +88,8 @@ def read_solution(path: str | Path) -> SolutionFile:
         trajectory=tuple(tuple(q) for q in trajectory), phases=phases, objects=objects,
         skeletons=_skeletons(data["skeletons"], path), stats=data["stats"],
         modes=data.get("modes"), objective=data.get("objective"),
-        symbolic_weight=data.get("symbolic_weight"))
+        symbolic_weight=data.get("symbolic_weight"),
+        kkt=stages_from_dict(data.get("kkt"), path, "kkt"))
     return check_solution(raw, path)
 
 
@@ -158,7 +160,7 @@ def _skeletons(value, path: str) -> tuple[SkeletonRecord, ...]:
             outcome=s.get("outcome", "not reached"), bound=s.get("bound"),
             bound_kind=s.get("bound_kind"), stage=s.get("stage"), nlp_cost=s.get("nlp_cost"),
             total_cost=s.get("total_cost"), seconds=float(seconds or 0.0),
-            reason=s.get("reason")))
+            reason=s.get("reason"), kkt=stages_from_dict(s.get("kkt"), path, f"{key}.kkt")))
     return tuple(records)
 
 

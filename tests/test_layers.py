@@ -14,7 +14,7 @@ LAYERS = (
     ("task",),
     ("search",),
     ("geometry",),
-    ("solution", "solution_read", "solution_fit"),
+    ("solution_kkt", "solution", "solution_read", "solution_fit"),
     ("optimize",),
     ("bnb",),
     ("minlp",),

@@ -28,7 +28,7 @@ def planar(trajectory, phases, poses) -> dict:
         "trajectory": [list(map(float, q)) for q in trajectory],
         "phases": [{"action": a, "start": s, "end": e, "attached": h} for a, s, e, h in phases],
         "objects": {"a": [list(p) for p in poses]},
-        "skeletons": [], "stats": {},
+        "skeletons": [], "stats": {}, "kkt": {},
     }
 
 

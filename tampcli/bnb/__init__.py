@@ -43,6 +43,7 @@ from tampcli.bnb.values import (
     StageResult,
 )
 from tampcli.solution import SkeletonRecord
+from tampcli.solution_kkt import KktStages
 
 __all__ = ["BnBOptions", "BnBResult", "Evaluate", "Event", "SkeletonSource", "StageResult",
            "branch_and_bound"]
@@ -97,6 +98,7 @@ class _Trial:
     heuristic_bound: float | None = None
     nlp_cost: float | None = None
     path_result: Any = None
+    kkt: KktStages = KktStages()  # of the stages solved so far
 
 
 class _Search:
@@ -244,6 +246,7 @@ class _Search:
                 self._stage_failed(trial, stage, result)
                 return
             warm = result
+            trial.kkt = getattr(result, "kkt", None) or trial.kkt
             if stage == "keyframes" and result.cost is not None \
                     and self._keyframe_bound_prunes(trial, result.cost):
                 return
@@ -306,7 +309,7 @@ class _Search:
             trial.rank, trial.names, trial.symbolic, trial.outcome,
             trial.heuristic_bound if heuristic else trial.proved_bound,
             "heuristic" if heuristic else "proved", trial.reached, trial.nlp_cost, total,
-            self.clock() - trial.started, trial.reason))
+            self.clock() - trial.started, trial.reason, trial.kkt))
         self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, stage=trial.reached,
                         outcome=trial.outcome, cost=trial.nlp_cost, bound=total,
                         seconds=self.elapsed(), message=trial.reason))

@@ -17,6 +17,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from tampcli.solution import SkeletonRecord
+from tampcli.solution_kkt import KktStages
 
 STAGES = ("final", "keyframes", "path")
 
@@ -40,14 +41,14 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
             shorter = tuple(shorter)
             symbolic = float(sum(op.cost for op in shorter))
             started = time.perf_counter()
-            stage, path = _last_stage(shorter, evaluate)
+            stage, path, kkt = _last_stage(shorter, evaluate)
             objective = None if path is None else float(path.cost) + symbolic_weight * symbolic
             result.skeletons.append(SkeletonRecord(
                 len(result.skeletons) + 1, tuple(op.name for op in shorter), symbolic,
                 "infeasible" if path is None else "solved", symbolic_weight * symbolic,
                 "proved", stage, None if path is None else float(path.cost), objective,
                 time.perf_counter() - started,
-                f"the answer less {plan[i].name} (action elimination)"))
+                f"the answer less {plan[i].name} (action elimination)", kkt))
             if path is None:
                 continue
             dropped += len(plan) - len(shorter)
@@ -63,10 +64,12 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
 
 
 def _last_stage(ops, evaluate):
-    """(the last stage reached, its path-stage result or None when one failed)."""
-    warm = None
+    """(the last stage reached, its path-stage result or None when one failed, the KKT
+    certificates of the stages solved)."""
+    warm, kkt = None, KktStages()
     for stage in STAGES:
         warm = evaluate(ops, stage, warm)
         if warm.status != "solved":
-            return stage, None
-    return "path", warm
+            return stage, None, kkt
+        kkt = getattr(warm, "kkt", None) or kkt
+    return "path", warm, kkt

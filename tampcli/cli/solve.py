@@ -152,25 +152,26 @@ def _summary(sol, ui, args) -> None:
         if sol.scene is not None:
             ui.info(f"solved: trajectory cost {sol.cost:.4f}, objective {sol.objective:.4f}, "
                     f"{len(sol.trajectory)} waypoints")
+            _certificate(sol, ui)
     else:
         ui.error(f"{sol.status}: {sol.reason}")
     if sol.skeletons and not ui.quiet:
         rows = [(str(s.rank), _short(s.plan), f"{s.symbolic_cost:g}",
                  _fmt(s.bound) + (" (h)" if s.bound_kind == "heuristic" else ""),
-                 s.stage or "-", s.outcome, _fmt(s.nlp_cost), f"{s.seconds:.2f}")
+                 s.stage or "-", s.outcome, _fmt(s.nlp_cost), _kkt(s), f"{s.seconds:.2f}")
                 for s in sol.skeletons]
         if ui.err.is_terminal:
-            table = Table(title="skeletons")
-            for col in ("#", "plan", "sym", "bound", "stage", "outcome", "nlp cost", "s"):
+            table = Table(title="skeletons", caption=KKT_CAPTION)
+            for col in ("#", "plan", "sym", "bound", "stage", "outcome", "nlp cost", "KKT", "s"):
                 table.add_column(col)
             for row in rows:
                 table.add_row(*row)
             ui.err.print(table)
         else:
             # Piped: one plain line per skeleton, easy to grep.
-            for rank, plan, sym, bound, stage, outcome, cost, secs in rows:
+            for rank, plan, sym, bound, stage, outcome, cost, kkt, secs in rows:
                 ui.err.print(f"skeleton #{rank}: {outcome} at {stage}, symbolic cost {sym}, "
-                             f"bound {bound}, nlp cost {cost}, {secs} s: {plan}",
+                             f"bound {bound}, nlp cost {cost}, kkt {kkt}, {secs} s: {plan}",
                              markup=False, highlight=False)
     ui.info("time: " + ", ".join(f"{k} {v:.2f}s" for k, v in seconds.items())
             + f"; skeletons {stats.get('skeletons_generated', 0)} generated, "
@@ -180,6 +181,32 @@ def _summary(sol, ui, args) -> None:
             f"NLP solves {stats.get('nlp_solves', 0)}")
     if args.out:
         ui.info(f"solution: {args.out}")
+
+
+KKT_CAPTION = ("KKT: the stationarity residual at the answer of the stage reached "
+               "(- where it failed); ! where only wrong-signed multipliers explain it")
+CARRIERS = 3  # active constraints named in the solution's KKT line
+CARRIES = 1e-9  # a multiplier above this (in magnitude) carries part of the gradient
+
+
+def _kkt(record) -> str:
+    """The skeleton table's KKT cell: see KKT_CAPTION."""
+    c = record.kkt.of(record.stage)
+    if c is None:
+        return "-"
+    return f"{c.stationarity:.1e}" + ("" if c.dual_feasible else " !")
+
+
+def _certificate(sol, ui) -> None:
+    """One line per stage of the answer's KKT certificate, with what carries it."""
+    for stage, c in sol.kkt.items():
+        least = "-" if c.min_multiplier is None else f"{c.min_multiplier:.3g}"
+        dual = "dual feasible" if c.dual_feasible else "NOT dual feasible"
+        carriers = [a for a in c.active if abs(a.multiplier) > CARRIES][:CARRIERS]
+        held = "; ".join(f"{a.name} ({a.multiplier:.3g})" for a in carriers)
+        ui.info(f"KKT {stage}: stationarity {c.stationarity:.1e} (|grad f| "
+                f"{c.gradient:.2g}), complementarity {c.complementarity:.1e}, min multiplier "
+                f"{least}, {dual}" + (f"; carried by {held}" if held else ""))
 
 
 def _short(plan, width=70) -> str:

@@ -14,6 +14,9 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import minimize
 
+from tampcli.optimize.kkt import certificate
+from tampcli.solution_kkt import KktCertificate
+
 FEASIBILITY = 1e-4  # m or rad: max violation still called feasible
 STALL_ITERATIONS = 25  # stop when the best point has not improved for this many iterations
 STALL_PENALTY = 100.0  # weight of the violation (m, rad) against the cost (rad^2) in the merit
@@ -28,7 +31,7 @@ class NlpOutcome:
     violation: float
     worst: str | None  # the worst violated row, in words
     iterations: int
-    kkt: float | None
+    kkt: KktCertificate | None  # optimize/kkt.py, at a solved answer
     message: str
     stopped: str | None = None  # "time" | "iterations" | "stall" when SLSQP did not finish
 
@@ -158,21 +161,7 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
         status = "limit" if reason in ("time", "iterations") else "infeasible"
         value = eq[i] if kind == "eq" else ineq[i]
         worst = (leq if kind == "eq" else lin)[i].words(value)
-    kkt = _kkt(grad, eq, jeq, ineq, jin, x, bounds) if status == "solved" else None
+    kkt = certificate(grad, eq, jeq, ineq, jin, leq, lin, x, bounds, ev.slices) \
+        if status == "solved" else None
     return NlpOutcome(x, status, float(cost), v, worst, iterations, kkt, message, reason)
 
-
-def _kkt(grad, eq, jeq, ineq, jin, x, bounds) -> float:
-    """|grad L| with least-squares multipliers on the active set (seed, Problem 3)."""
-    active = [jeq] if len(eq) else []
-    if len(ineq):
-        act = ineq <= 1e-6
-        if act.any():
-            active.append(jin[act])
-    free = np.array([lo + 1e-9 < xi < hi - 1e-9 for xi, (lo, hi) in zip(x, bounds, strict=True)])
-    g = grad[free]
-    if not active or not free.any():
-        return float(np.linalg.norm(g))
-    A = np.vstack(active)[:, free]
-    lam, *_ = np.linalg.lstsq(A.T, -g, rcond=None)
-    return float(np.linalg.norm(g + A.T @ lam))

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from tampcli.optimize.values import Keyframes
+from tampcli.solution_kkt import KktStages
 
 STATUSES = ("solved", "infeasible", "limit")
 STAGES = ("final", "keyframes", "path")
@@ -22,6 +23,9 @@ class TrajectoryResult:
         a local NLP optimum, hence `bound_kind = "heuristic"`); 0 for "final".
     violation: max constraint violation at the returned point (m or rad).
     worst_constraint: that violation in words, when not solved.
+    kkt: the KKT certificate (optimize/kkt.py) of each stage solved on the way: a
+        keyframes result carries its placements' (final) one too, a path result
+        those of the keyframes it went through.
     proved: the infeasibility follows from the skeleton and the scene alone
         (lowering errors, an object larger than its region), not from an NLP failing.
     """
@@ -36,7 +40,7 @@ class TrajectoryResult:
     iterations: int = 0
     nlp_solves: int = 0
     seconds: float = 0.0
-    kkt_residual: float | None = None
+    kkt: KktStages = KktStages()  # this stage's certificate and its warm start's
     bound_kind: str | None = None  # "proved" | "heuristic"
     proved: bool = False
     trajectory: np.ndarray | None = field(default=None, repr=False)

@@ -21,6 +21,7 @@ from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import Kinematics, SideGrip
 from tampcli.optimize.init import keyframe_guess
+from tampcli.optimize.kkt import combined
 from tampcli.optimize.layout import grip_block, keyframe_block
 from tampcli.optimize.motion import solve_motion
 from tampcli.optimize.nlp import FEASIBILITY, solve_nlp, violation_at
@@ -35,6 +36,7 @@ from tampcli.optimize.values import (
     placements_from_blocks,
 )
 from tampcli.optimize.world_state import grip_of, reach_of
+from tampcli.solution_kkt import KktStages
 
 GRIP_BOUND = 4 * math.pi
 RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
@@ -181,7 +183,7 @@ def _final(run: _Run) -> TrajectoryResult:
         return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
                           placements=placements)
     return run.result("solved", cost=0.0, violation=out.violation, placements=placements,
-                      kkt_residual=out.kkt)
+                      kkt=KktStages(final=out.kkt))
 
 
 # ---------------------------------------------------------------- keyframes
@@ -215,17 +217,19 @@ def _keyframes_with(run: _Run, warm, grips: dict[int, float] | None = None,
     have = warm is not None and warm.placements and all(
         s.index in warm.placements for s in problem.steps if s.kind.places)
     if placements is not None:
-        pass
+        final_kkt = None
     elif have and warm.names == problem.names:
-        placements = warm.placements
+        placements, final_kkt = warm.placements, warm.kkt.final
     else:
         out, placements = _placements(run)
         if out is not None and out.status != "solved":
             return run.result(out.status, violation=out.violation,
                               worst_constraint=f"placements: {out.worst}")
+        final_kkt = None if out is None else out.kkt
     layout = keyframe_layout(problem)
     if layout.size == 0:  # symbolic actions only: nothing moves
-        return run.result("solved", cost=0.0, placements=placements)
+        return run.result("solved", cost=0.0, placements=placements,
+                          kkt=KktStages(final=final_kkt))
     world = problem.world
     bounds = []
     joints = {keyframe_block(k) for k in range(problem.n_keyframes)}
@@ -272,7 +276,7 @@ def _keyframes_with(run: _Run, warm, grips: dict[int, float] | None = None,
                           placements=placements, worst_constraint="time limit reached before "
                           "the keyframe NLP converged")
     return run.result("solved", cost=out.cost, phase_costs=phase_costs,
-                      violation=out.violation, kkt_residual=out.kkt, keyframes=kf,
+                      violation=out.violation, kkt=KktStages(final_kkt, out.kkt), keyframes=kf,
                       choices=choices, placements=placements)
 
 
@@ -391,7 +395,7 @@ def _path_through(run: _Run, kfr) -> TrajectoryResult:
     contexts = walk(problem, kf, choices, run.start)
     opts = problem.options
     T = opts.waypoints
-    waypoints, kkts = {}, []
+    waypoints, kkts = {}, {}
     checks = opts.interpolation_checks
     failing: set[int] = set()
     for attempt in range(VERIFY_ROUNDS):
@@ -408,12 +412,12 @@ def _path_through(run: _Run, kfr) -> TrajectoryResult:
                                   worst_constraint=out.worst or label, keyframes=kf,
                                   choices=choices, placements=kfr.placements)
             waypoints[ctx.index] = out.x.reshape(T - 1, problem.n)
-            if out.kkt is not None:
-                kkts.append(out.kkt)
+            kkts[ctx.index] = out.kkt
         traj, phases, poses, grasps = assemble(problem, run.start, waypoints, contexts)
         result = run.result("solved", cost=float(np.sum(np.diff(traj, axis=0) ** 2)),
                             phase_costs=_phase_costs(traj, T, problem.n_keyframes),
-                            kkt_residual=max(kkts) if kkts else None, trajectory=traj,
+                            kkt=dataclasses.replace(kfr.kkt, path=combined(kkts.values())),
+                            trajectory=traj,
                             phases=phases, object_poses=poses, keyframes=kf, choices=choices,
                             placements=kfr.placements, grasps=grasps)
         problems = verify_mod.verify(problem, result)

@@ -66,6 +66,12 @@ def test_seed_planar_example_pick_place_solves(planar):
     # Cost: the seed's smoothness term, and the keyframe value bounds it (Cauchy-Schwarz).
     assert path.cost == pytest.approx(float(np.sum(np.diff(traj, axis=0) ** 2)))
     assert keyframes.cost <= path.cost + 1e-9
+    # Each stage carries its warm start's KKT certificates on, and adds its own.
+    assert final.kkt.final is not None and final.kkt.keyframes is None
+    assert keyframes.kkt.final == final.kkt.final and keyframes.kkt.keyframes is not None
+    # (its keyframes: those the path went through, with the suction grip at a face's middle)
+    assert path.kkt.final == final.kkt.final and path.kkt.keyframes is not None
+    assert path.kkt.path.dual_feasible and path.kkt.path.stationarity < 1e-2
     assert len(path.phases) + 1 == len(path.object_poses["o"])
 
 
@@ -88,7 +94,9 @@ def test_panda_over_a_wall(wall):
     straight = [problem.checker.min_distance(q0 + s * (q1 - q0), None, ("a", grasp),
                                              frozenset({"table"})) for s in np.linspace(0, 1, 21)]
     assert min(straight) < 0
-    assert result.kkt_residual is not None and math.isfinite(result.kkt_residual)
+    kkt = result.kkt
+    assert kkt.final is not None and kkt.keyframes is not None
+    assert kkt.path is not None and math.isfinite(kkt.path.stationarity) and kkt.path.nlps >= 1
 
 
 def test_blocked_region_is_infeasible_quickly_and_says_why(wall):
