@@ -1,7 +1,7 @@
 """One motion's path NLP (its keyframes fixed): the margin schedule, its starts, and
 the points between waypoints added lazily.
 
-`run` is the solve's bookkeeping (solve._Run): the problem, its deadline, the
+`run` is the solve's bookkeeping (run.Run): the problem, its deadline, the
 checker and kinematics, and `nlp` (one counted SLSQP solve).
 """
 

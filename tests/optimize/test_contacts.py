@@ -225,7 +225,7 @@ def test_fingers_do_not_brush_what_they_are_about_to_grasp(robust):
 
 
 def test_face_grips_put_the_rim_at_the_middle_of_each_face(planar):
-    from tampcli.optimize.solve import _face_grips
+    from tampcli.optimize.keyframe_stage import face_grips as _face_grips
 
     scene, modes, world = planar
     problem = lower(ops("(pick o start)", "(place o goal)"), scene, modes, world)

@@ -16,11 +16,13 @@ from tampcli.geometry.collision import CollisionChecker
 from tampcli.geometry.scene import load_scene
 from tampcli.geometry.world import World
 from tampcli.optimize import relocate
-from tampcli.optimize.assemble import walk
 from tampcli.optimize.modes import load_modes
 from tampcli.optimize.options import OptimizeOptions
+from tampcli.optimize.path import allowed_contacts
 from tampcli.optimize.problem import lower
+from tampcli.optimize.run import Run
 from tampcli.optimize.solve import solve
+from tampcli.optimize.values import Placement
 from tampcli.pddl import parser
 
 from .helpers import ops
@@ -58,22 +60,37 @@ def relocatable_steps(problem, motion, moved):
     return relocate.relocatable(problem, motion, moved)
 
 
-def _b1_where_carry_starts(problem, result):
-    contexts = walk(problem, result.keyframes, result.choices, problem.world.start)
-    return contexts[3].moved["b1"][:2, 3]
+def _carry_through_the_corridor(problem, b1_xy):
+    """An Obstruction as relocate.find leaves it: the carry of t from the yard into
+    the pen's open end (x 0.1) along y = 0, with b1 set down at b1_xy."""
+    grasp = np.eye(4)
+    grasp[0, 3], grasp[2, 3] = -0.18, -0.01  # t held beside the disk, as the grip puts it
+    b1 = np.eye(4)
+    b1[:3, 3] = (*b1_xy, 0.025)
+    path = np.array([[-0.32, -0.15], [-0.25, 0.0], [0.46, 0.0]])
+    ignore = allowed_contacts(problem.motions[3]) | {"b1"}
+    return relocate.Obstruction(3, path, ("b1",), ("t", grasp), {"b1": b1}, ignore)
 
 
-def test_the_keyframes_block_the_carry_and_the_path_stage_moves_b1(pen):
+def test_a_blocker_in_the_corridor_is_given_spots_clear_of_the_carry(pen):
     problem = _problem(pen)
-    keyframes = solve(problem, "keyframes")
-    assert keyframes.solved
-    before = _b1_where_carry_starts(problem, keyframes)
-    result = solve(problem, "path")
+    run = Run(problem, "path")
+    obstruction = _carry_through_the_corridor(problem, (-0.09, 0.0))
+    first = {1: Placement(-0.09, 0.0, 0.0), 3: Placement(0.3, 0.0, 0.0)}
+    assert not relocate.still_clear(run, obstruction, first)
+    found = relocate.relocations(run, obstruction, first)
+    assert len(found) == 3
+    for move in found:
+        xy, radius = move.anchors[1]
+        assert 0.0 < radius <= relocate.ANCHOR
+        np.testing.assert_allclose(move.origins[1], xy)
+        np.testing.assert_allclose(move.origins[3], [0.3, 0.0])  # t's placement kept
+        assert np.all(xy >= [-0.75, -0.35]) and np.all(xy <= [-0.05, 0.35])  # the yard
+        assert relocate.still_clear(run, obstruction, {1: Placement(*xy, 0.0)})
+
+
+def test_the_path_stage_solves_the_skeleton_whatever_the_keyframes_chose(pen):
+    # Where the keyframe NLP sets b1 down depends on its start; wherever that is,
+    # the carry must find its way (b1 relocated where it is in the way).
+    result = solve(_problem(pen), "path")
     assert result.solved, result.worst_constraint
-    after = _b1_where_carry_starts(problem, result)
-    # The keyframe NLP (cheapest carry) sets b1 down at the yard's edge in front of
-    # the pen's open end (x 0.1): the target (26 cm long) cannot pass. The path
-    # stage sets it down elsewhere in the yard.
-    assert before[0] > -0.25 and abs(before[1]) < 0.15
-    assert np.linalg.norm(after - before) > 0.1
-    assert np.all(after >= [-0.75, -0.35]) and np.all(after <= [-0.05, 0.35])

@@ -1,0 +1,258 @@
+"""The final and keyframe stages of one skeleton: placements (no robot), then
+IK-started keyframes in one NLP; the planar suction grips tried at each face
+where the NLP's own contact angles fail."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+
+import numpy as np
+
+from tampcli.optimize.final_starts import starts
+from tampcli.optimize.grips import SideGrip
+from tampcli.optimize.init import keyframe_guess
+from tampcli.optimize.layout import grip_block, keyframe_block
+from tampcli.optimize.nlp import FEASIBILITY, violation_at
+from tampcli.optimize.result import TrajectoryResult
+from tampcli.optimize.run import Run
+from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
+from tampcli.optimize.values import (
+    Keyframes,
+    Placement,
+    placement_blocks,
+    placements_from_blocks,
+)
+from tampcli.optimize.world_state import grip_of, reach_of
+from tampcli.solution_kkt import KktStages
+
+GRIP_BOUND = 4 * math.pi
+RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
+FACE_SAME = 0.05  # rad: a contact angle this close to a face's middle is at that face
+FIXED_GRIP = 1e-6  # rad: the bounds' half width around a grip parameter kept fixed
+
+
+def too_small(problem) -> str | None:
+    """An object whose footprint fits its target region in no orientation (proved)."""
+    regions = {r.name: r for r in problem.scene.regions}
+    for step in problem.steps:
+        if step.kind.places and step.target in regions:
+            w, h = regions[step.target].size
+            info = problem.bodies[step.obj]
+            a, b = 2 * info.half[0], 2 * info.half[1]
+            if not ((a <= w and b <= h) or (b <= w and a <= h)):
+                return (f"{step.name}: {step.obj} ({100 * a:.0f} x {100 * b:.0f} cm) does not "
+                        f"fit region {step.target} ({100 * w:.0f} x {100 * h:.0f} cm)")
+    return None
+
+
+def beyond_reach(problem) -> str | None:
+    """A target region no point of which the Panda's tool can come near (proved).
+
+    The Panda's reach ball (world_state.reach_of: the stretched arm from the
+    shoulder) bounds where the tool can be; the tool holds the object inside
+    the object's bounding sphere, so a region farther from the ball than that
+    radius cannot receive it. Other arms' reach is sampled, not a bound: no
+    proof for them.
+    """
+    if problem.planar or problem.scene.robot.model != "panda":
+        return None
+    centre, reach = reach_of(problem)
+    regions = {r.name: r for r in problem.scene.regions}
+    for step in problem.steps:
+        if step.kind.places and step.target in regions:
+            region = regions[step.target]
+            info = problem.bodies[step.obj]
+            nearest = np.clip(centre[:2], region.lower, region.upper)
+            gap = math.hypot(*(nearest - centre[:2]), step.rest_z - centre[2])
+            slack = math.sqrt(info.half[0] ** 2 + info.half[1] ** 2 + info.half[2] ** 2)
+            if gap > reach + slack:
+                return (f"{step.name}: region {step.target} is {100 * (gap - reach):.0f} cm "
+                        f"beyond the arm's reach ({reach:.2f} m from the shoulder)")
+    return None
+
+
+def solve_placements(run: Run, origins: dict | None = None, like: dict | None = None):
+    """Run the final NLP from each of final_starts.starts until one solves; returns
+    (outcome or None when there is nothing to place, values). Its outcome depends on
+    the skeleton alone (no warm start from another skeleton: see final_starts).
+    Given `origins` (step -> (x, y)), from there alone, at the yaws of `like`."""
+    problem = run.problem
+    layout = final_layout(problem)
+    if layout.size == 0:
+        return None, {}
+    bounds = [(-1e3, 1e3)] * layout.size
+    best = None
+    if origins is not None:
+        given = {i: Placement(float(o[0]), float(o[1]), like[i].yaw) for i, o in origins.items()}
+        candidates = [lambda _problem: (given, origins)]
+    else:
+        candidates = starts(problem)
+    for start in candidates:
+        placements, origins = start(problem)
+        out = run.nlp(lambda x, origins=origins: final_rows(problem, layout.unpack(x), origins),
+                      layout, layout.pack(placement_blocks(placements)), bounds)
+        if best is None or out.status == "solved" or out.violation < best[0].violation:
+            best = (out, placements)
+        if out.status == "solved" or time.perf_counter() > run.deadline:
+            break
+    out, placements = best
+    return out, placements_from_blocks(layout.unpack(out.x), placements)
+
+
+def final(run: Run) -> TrajectoryResult:
+    why = too_small(run.problem) or beyond_reach(run.problem)
+    if why:
+        return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
+    out, placements = solve_placements(run)
+    if out is None:
+        return run.result("solved", cost=0.0)
+    if out.status != "solved":
+        return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
+                          placements=placements)
+    return run.result("solved", cost=0.0, violation=out.violation, placements=placements,
+                      kkt=KktStages(final=out.kkt))
+
+
+# ---------------------------------------------------------------- keyframes
+
+
+def _shares_prefix(problem, warm) -> bool:
+    return (warm is not None and warm.keyframes and len(warm.names) <= len(problem.names)
+            and tuple(problem.names[:len(warm.names)]) == tuple(warm.names))
+
+
+def keyframes(run: Run, warm) -> TrajectoryResult:
+    """The keyframe NLP; where it fails, again with the planar suction grips kept at
+    the middle of each face (`_face_grips`: a peg pushed into a socket by its back face)."""
+    result = keyframes_with(run, warm)
+    for grips in face_grips(run.problem, result):
+        if result.solved or result.proved or time.perf_counter() > run.deadline:
+            break
+        again = keyframes_with(run, warm, grips)
+        result = again if again.solved else result
+    return result
+
+
+def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
+                    placements: dict | None = None) -> TrajectoryResult:
+    """`grips`: step -> a grip parameter the NLP keeps (the NLP's choice otherwise);
+    `placements`: the final stage's values to use (solved from scratch otherwise)."""
+    problem = run.problem
+    why = too_small(problem) or beyond_reach(problem)
+    if why:
+        return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
+    have = warm is not None and warm.placements and all(
+        s.index in warm.placements for s in problem.steps if s.kind.places)
+    if placements is not None:
+        final_kkt = None
+    elif have and warm.names == problem.names:
+        placements, final_kkt = warm.placements, warm.kkt.final
+    else:
+        out, placements = solve_placements(run)
+        if out is not None and out.status != "solved":
+            return run.result(out.status, violation=out.violation,
+                              worst_constraint=f"placements: {out.worst}")
+        final_kkt = None if out is None else out.kkt
+    layout = keyframe_layout(problem)
+    if layout.size == 0:  # symbolic actions only: nothing moves
+        return run.result("solved", cost=0.0, placements=placements,
+                          kkt=KktStages(final=final_kkt))
+    world = problem.world
+    bounds = []
+    joints = {keyframe_block(k) for k in range(problem.n_keyframes)}
+    fixed = {grip_block(s): t for s, t in (grips or {}).items()}
+    for name, _size in layout.blocks:
+        if name in joints:
+            bounds.extend(zip(world.lower, world.upper, strict=True))
+        elif name in fixed:
+            bounds.append((fixed[name] - FIXED_GRIP, fixed[name] + FIXED_GRIP))
+        else:
+            bounds.append((-GRIP_BOUND, GRIP_BOUND))
+    best = None
+    for attempt in range(2):
+        guess, choices = keyframe_guess(problem, placements, run.start, run.rng,
+                                        jitter=RETRY_JITTER if attempt else 0.0)
+        if attempt == 0 and _shares_prefix(problem, warm):
+            choices.update(warm.choices)
+            guess = guess.warmed(warm.keyframes)
+        if grips:
+            guess = Keyframes(guess.q, {**guess.grip, **grips})
+
+        def evaluate(x, choices=choices):
+            return keyframe_rows(problem, layout.unpack(x), choices, run.kin, run.checker,
+                                 run.start, anchors=run.anchors)
+
+        out = run.nlp(evaluate, layout, layout.pack(guess.blocks()), bounds)
+        if best is None or (out.status == "solved") or out.violation < best[0].violation:
+            best = (out, choices)
+        if out.status == "solved" or time.perf_counter() > run.deadline:
+            break
+    out, choices = best
+    if out.status != "solved" and time.perf_counter() < run.deadline:
+        out = _tight_keyframes(run, layout, bounds, out, choices)
+    kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
+    T = problem.options.waypoints
+    qs = [run.start, *kf.q]
+    phase_costs = tuple(float(np.sum((b - a) ** 2)) / T for a, b in zip(qs, qs[1:], strict=False))
+    if out.status != "solved":
+        return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
+                          keyframes=kf, choices=choices, placements=placements)
+    if out.stopped == "time":
+        # Feasible but far from converged: its cost would be a meaningless bound.
+        return run.result("limit", violation=out.violation, keyframes=kf, choices=choices,
+                          placements=placements, worst_constraint="time limit reached before "
+                          "the keyframe NLP converged")
+    return run.result("solved", cost=out.cost, phase_costs=phase_costs,
+                      violation=out.violation, kkt=KktStages(final_kkt, out.kkt), keyframes=kf,
+                      choices=choices, placements=placements)
+
+
+def _tight_keyframes(run: Run, layout, bounds, out, choices):
+    """The keyframe NLP again with `tight_margin`, from where it failed, when the
+    margin is part of what it violates there (a slot narrower than twice the
+    margin); else, or when that fails too, `out`."""
+    problem = run.problem
+    opts = problem.options
+    if opts.tight_margin >= opts.margin:
+        return out
+    tight = dataclasses.replace(problem, options=dataclasses.replace(
+        opts, margin=opts.tight_margin))
+
+    def evaluate(x):
+        return keyframe_rows(tight, layout.unpack(x), choices, run.kin, run.checker, run.start,
+                             anchors=run.anchors)
+
+    if violation_at(evaluate, layout, out.x) >= out.violation - FEASIBILITY:
+        return out
+    retry = run.nlp(evaluate, layout, out.x, bounds)
+    return retry if retry.status == "solved" or retry.violation < out.violation else out
+
+
+def face_grips(problem, kfr):
+    """Other planar suction grips, kept fixed: the rim at the middle of each face.
+
+    The keyframe NLP takes the cheapest contact angle near its guess; a carry through a
+    passage may need the object in line with the disk (robust-planar p03: beside
+    it, disk and block span 18 cm of an 11 cm doorway), which only the path
+    stage finds out. Nearest faces first; the face the angle is at already is
+    not tried again.
+    """
+    steps = {s.index: s for s in problem.steps}
+    sides = {}
+    if not kfr.keyframes:
+        return
+    for index, t in kfr.keyframes.grip.items():
+        grip = grip_of(problem, steps[index], kfr.choices)
+        if isinstance(grip, SideGrip) and grip.half is not None:
+            faces = [t + _wrap(grip.yaw + j * math.pi / 2 - t) for j in range(4)]
+            sides[index] = sorted(faces, key=lambda f, t=t: abs(f - t))
+    for j in range(4):
+        grips = {i: faces[j] for i, faces in sides.items()}
+        if grips and any(abs(f - kfr.keyframes.grip[i]) > FACE_SAME for i, f in grips.items()):
+            yield grips
+
+
+def _wrap(a: float) -> float:
+    return (a + math.pi) % (2 * math.pi) - math.pi

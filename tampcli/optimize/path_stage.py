@@ -1,0 +1,141 @@
+"""The path stage of one skeleton: one NLP per motion through the keyframes,
+judged by `verify` at 10x; objects set down in a later motion's way moved
+(relocate); the planar suction grips tried at each face."""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+
+import numpy as np
+
+from tampcli.optimize import relocate
+from tampcli.optimize import verify as verify_mod
+from tampcli.optimize.assemble import assemble, walk
+from tampcli.optimize.keyframe_stage import (
+    face_grips,
+    keyframes,
+    keyframes_with,
+    solve_placements,
+)
+from tampcli.optimize.kkt import combined
+from tampcli.optimize.motion import solve_motion
+from tampcli.optimize.result import TrajectoryResult
+from tampcli.optimize.run import Run
+
+# Path solves per skeleton that `verify` judges: each round after the first samples the
+# failing motions twice as finely (3, 7, 15 points a segment by default); a motion that
+# ends in a narrow slot can dip into a wall between 7.
+VERIFY_ROUNDS = 3
+
+
+def path(run: Run, warm) -> TrajectoryResult:
+    problem = run.problem
+    if (warm is not None and warm.solved and warm.stage in ("keyframes", "path")
+            and warm.names == problem.names and warm.keyframes):
+        kfr = warm
+    else:
+        run.stage = "keyframes"
+        kfr = keyframes(run, warm)
+        run.stage = "path"
+        if not kfr.solved:
+            return run.result(kfr.status, violation=kfr.violation,
+                              worst_constraint=kfr.worst_constraint, proved=kfr.proved)
+    # A suction grip off a face's middle first gets that face (a carry in line with
+    # the disk), then the NLP's own angle, then the other faces.
+    faces = list(face_grips(problem, kfr))
+    result = None
+    for grips in faces[:1] + [None] + faces[1:]:
+        if result is not None and (result.solved or time.perf_counter() > run.deadline):
+            break
+        start = kfr
+        if grips is not None:
+            run.stage = "keyframes"
+            start = keyframes_with(run, warm, grips)
+            run.stage = "path"
+        if start.solved:
+            found = _relocated(run, warm, grips, start, path_through(run, start))
+            result = found if result is None or found.solved else result
+    return result
+
+
+RELOCATIONS = 2  # rounds of objects moved out of a failed motion's way, per grip choice
+
+
+def _relocated(run: Run, warm, grips, kfr, found: TrajectoryResult) -> TrajectoryResult:
+    """`found`, or where its motion failed for an object this skeleton set down in
+    the way (relocate), the path through placements moved clear of it."""
+    for _ in range(RELOCATIONS):
+        obstruction, run.obstruction = run.obstruction, None
+        if found.solved or obstruction is None or time.perf_counter() > run.deadline:
+            return found
+        for move in relocate.relocations(run, obstruction, kfr.placements):
+            out, placements = solve_placements(run, move.origins, kfr.placements)
+            if out.status != "solved" or not relocate.still_clear(run, obstruction, placements):
+                continue
+            run.stage, run.anchors = "keyframes", move.anchors
+            again = keyframes_with(run, warm, grips, placements)
+            run.stage, run.anchors = "path", None
+            if again.solved:
+                kfr, found = again, path_through(run, again)
+                break
+        else:
+            return found
+    run.obstruction = None
+    return found
+
+
+def path_through(run: Run, kfr) -> TrajectoryResult:
+    """The path stage through the keyframes of `kfr` (solved)."""
+    problem = run.problem
+    kf, choices = kfr.keyframes, kfr.choices
+    contexts = walk(problem, kf, choices, run.start)
+    opts = problem.options
+    T = opts.waypoints
+    waypoints, kkts = {}, {}
+    checks = opts.interpolation_checks
+    failing: set[int] = set()
+    for attempt in range(VERIFY_ROUNDS):
+        for ctx in contexts:
+            if attempt and ctx.index not in failing:
+                continue
+            # A motion sampled finer starts from its last solution (collision-free at
+            # the coarser samples), not from scratch.
+            out = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index),
+                               warm=waypoints.get(ctx.index))
+            if out.status != "solved":
+                label = _phase_label(problem, ctx.index)
+                return run.result(out.status, violation=out.violation,
+                                  worst_constraint=out.worst or label, keyframes=kf,
+                                  choices=choices, placements=kfr.placements)
+            waypoints[ctx.index] = out.x.reshape(T - 1, problem.n)
+            kkts[ctx.index] = out.kkt
+        traj, phases, poses, grasps = assemble(problem, run.start, waypoints, contexts)
+        result = run.result("solved", cost=float(np.sum(np.diff(traj, axis=0) ** 2)),
+                            phase_costs=_phase_costs(traj, T, problem.n_keyframes),
+                            kkt=dataclasses.replace(kfr.kkt, path=combined(kkts.values())),
+                            trajectory=traj,
+                            phases=phases, object_poses=poses, keyframes=kf, choices=choices,
+                            placements=kfr.placements, grasps=grasps)
+        problems = verify_mod.verify(problem, result)
+        if not problems:
+            return result
+        # A collision between the sample points: sample the failing phases finer.
+        failing.clear()
+        failing.update({i for i, _ in verify_mod.failing_motions(problem, result)}
+                       or range(problem.n_keyframes))
+        checks = 2 * checks + 1
+        if time.perf_counter() > run.deadline:
+            break
+    return run.result("infeasible", violation=math.inf, worst_constraint=problems[0],
+                      keyframes=kf, choices=choices, placements=kfr.placements)
+
+
+def _phase_costs(traj, T, K):
+    d = np.sum(np.diff(traj, axis=0) ** 2, axis=1)
+    return tuple(float(np.sum(d[k * T:(k + 1) * T])) for k in range(K))
+
+
+def _phase_label(problem, k) -> str:
+    return f"motion {k} before {problem.step_of_keyframe(k).name}"

@@ -1,0 +1,44 @@
+"""Per-call bookkeeping of one stage solve: the deadline, the counters, the
+checker and kinematics, and what a failed motion leaves for the path stage."""
+
+from __future__ import annotations
+
+import time
+
+import numpy as np
+
+from tampcli.optimize.grips import Kinematics
+from tampcli.optimize.nlp import solve_nlp
+from tampcli.optimize.problem import TrajectoryProblem
+from tampcli.optimize.result import TrajectoryResult
+
+
+class Run:
+    """Per-call bookkeeping: deadline, counters, the checker and kinematics."""
+
+    def __init__(self, problem: TrajectoryProblem, stage: str):
+        self.problem = problem
+        self.stage = stage
+        self.t0 = time.perf_counter()
+        self.deadline = self.t0 + problem.options.time_limit
+        self.iterations = 0
+        self.nlp_solves = 0
+        self.kin = Kinematics(problem.world)
+        self.checker = problem.checker
+        self.start = np.asarray(problem.world.start, dtype=float)
+        self.rng = np.random.default_rng(problem.options.seed)
+        self.obstruction = None  # relocate.Obstruction of the last motion that failed
+        self.anchors = None  # relocate.Relocation.anchors the keyframe NLP keeps to
+
+    def result(self, status: str, **fields) -> TrajectoryResult:
+        fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")
+        return TrajectoryResult(status=status, stage=self.stage, names=self.problem.names,
+                                iterations=self.iterations, nlp_solves=self.nlp_solves,
+                                seconds=time.perf_counter() - self.t0, **fields)
+
+    def nlp(self, evaluate, layout, x0, bounds):
+        out = solve_nlp(evaluate, layout, x0, bounds, self.problem.options.max_iterations,
+                        self.deadline)
+        self.iterations += out.iterations
+        self.nlp_solves += 1
+        return out
