@@ -38,7 +38,7 @@ def _clear_contact_angle(walk, step, obj_pose, grip) -> float:
     base = getattr(grip, "yaw", 0.0)
     candidates = [toward] + [base + j * 2 * math.pi / spokes for j in range(spokes)]
     others = {n: p for n, p in walk.poses.items() if n != step.obj}
-    margin = walk.problem.options.margin
+    margin = walk.problem.options.tight_margin
 
     def score(phi):
         q = walk.planar_q(obj_pose[:3, 3], grip, phi)

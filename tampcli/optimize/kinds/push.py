@@ -47,6 +47,35 @@ from tampcli.optimize.values import GripChoice
 MEASURE_LIMIT = 0.01  # m: the measured touch corrects the nominal reach by at most this
 
 
+def _clear_at_both_ends(walk, step, obj_pose, end, choices):
+    """(start keyframe, choice) of the first contact choice whose hand is reachable and
+    clear both where the push starts and where it ends: a top-down hand clear at the
+    start can end in a low roof the object is pushed under (a level hand passes)."""
+    problem = walk.problem
+    checker = problem.checker
+    q_prev, best = walk.q_prev, None
+    for c in choices:
+        G = transforms.pose_inverse(face_grip(problem, step, c).matrix(0.0))
+        walk.q_prev = q_prev
+        unreachable, clashes, first = False, 0, None
+        for pose in (obj_pose, end):
+            q, res = walk.solve_ik(pose @ G)
+            walk.q_prev = q
+            first = q if first is None else first
+            unreachable |= res > walk.IK_TOLERANCE
+            if checker is not None:
+                poses = {**walk.poses, step.obj: pose}
+                # In something, not merely near it: the IK solution of a level hand
+                # hugs the table within a millimetre; the NLP moves it off.
+                clashes += checker.min_distance(q, poses, None, frozenset({step.obj}),
+                                                static=False, horizon=0.0) < 0.0
+        score = (unreachable, clashes, float(np.linalg.norm(first - q_prev)))
+        if best is None or score < best[0]:
+            best = (score, first, c)
+    walk.q_prev = q_prev
+    return best[1], best[2]
+
+
 def face_grip(problem, step, choice):
     """The grip of a push whose face is `choice.face` (planar: at choice.z, choice.yaw)."""
     info = problem.bodies[step.obj]
@@ -133,9 +162,7 @@ class Push(ModeKind):
             # fingertips on the face) where the object is tall enough for it.
             levels = (False, True) if level_lift(info) is not None else (False,)
             choices = [GripChoice(face=a, level=level) for level in levels for a in aligned]
-            targets = [(obj_pose @ transforms.pose_inverse(
-                face_grip(problem, step, c).matrix(0.0)), c) for c in choices]
-            q0, choice = walk.best_of(targets, ignore={step.obj})
+            q0, choice = _clear_at_both_ends(walk, step, obj_pose, end, choices)
             # Touch, measured: the fingers' extent behind the tool origin is the arm's.
             nominal = face_grip(problem, step, choice)
             gap = clearance(problem, step.obj, obj_pose, q0) - CONTACT_GAP

@@ -199,7 +199,9 @@ def path_rows(ineq: RowSet, eq: RowSet, step: str, poses, blocks, grip: FaceGrip
     tangent where the push starts (the object does not turn); for the arm,
     the yaw of every waypoint equal to the first's.
     """
-    R0 = poses[0].axes @ np.array(grip.axes)
+    # The tool's axes in the world at the start: the object's (R_tool @ G) times G^T;
+    # the face's normal and tangent are given in the tool's frame.
+    R0 = poses[0].axes @ np.array(grip.axes).T
     n, e = R0 @ np.array(grip.normal), R0 @ np.array(grip.tangent)
     label = Label(step, "motion not into the pushed face (a drag)")
     for i in range(len(poses) - 1):
