@@ -27,7 +27,8 @@ COMMANDS = {
 
 _HELP = {
     "check": "parse and type-check a domain (and problem, and scene)",
-    "plan": "symbolic planning: the K best plans in IPC format",
+    "plan": "symbolic planning, plans in IPC format: one (-k 1; LAMA by default, not "
+            "necessarily the cheapest) or the K cheapest (-k K)",
     "validate": "check a plan or a solution.json",
     "solve": "full TAMP: ranked skeletons + trajectory optimization",
     "render": "replay a solution.json headlessly and export a video",

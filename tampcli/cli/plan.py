@@ -30,7 +30,11 @@ FALLBACK_OPTIMAL_HEURISTIC = "hmax"
 def add_parser(p) -> None:
     p.add_argument("domain", help="PDDL domain file")
     p.add_argument("problem", help="PDDL problem file")
-    p.add_argument("-k", type=int, default=1, metavar="K", help="number of plans, cheapest first (default 1)")
+    p.add_argument("-k", type=int, default=1, metavar="K",
+                   help="number of plans (default 1). -k 1: one plan from --search; with the "
+                        "default lama not necessarily the cheapest (--search astar: a cheapest "
+                        "one). -k K >= 2: the K cheapest plans, exactly, cheapest first (the "
+                        "top-k planner; --search and --heuristic do not apply)")
     p.add_argument("--search", choices=sorted(SEARCHES), default=None,
                    help="search algorithm (default lama: lazy greedy search alternating h_FF "
                         "with the landmark count, preferred operators from h_FF, as Fast "
@@ -49,7 +53,8 @@ def add_parser(p) -> None:
     p.add_argument("--max-expansions", type=int, default=None, metavar="N",
                    help="stop after N expansions (k = 1 only)")
     p.add_argument("--out", default=None, metavar="FILE",
-                   help="write the best plan to FILE (with -k: the others to FILE.1, FILE.2, ...)")
+                   help="write the plan to FILE (with -k K >= 2: the cheapest, the others "
+                        "to FILE.1, FILE.2, ...; with --anytime: the best so far)")
     p.add_argument("--loopless", action="store_true",
                    help="with -k: only plans that never revisit a state")
 

@@ -42,8 +42,8 @@ def too_small(problem) -> str | None:
             info = problem.bodies[step.obj]
             a, b = 2 * info.half[0], 2 * info.half[1]
             if not ((a <= w and b <= h) or (b <= w and a <= h)):
-                return (f"{step.name}: {step.obj} ({100 * a:.0f} x {100 * b:.0f} cm) does not "
-                        f"fit region {step.target} ({100 * w:.0f} x {100 * h:.0f} cm)")
+                return (f"{step.name}: {step.obj} ({100 * a:.1f} x {100 * b:.1f} cm) does not "
+                        f"fit region {step.target} ({100 * w:.1f} x {100 * h:.1f} cm)")
     return None
 
 

@@ -120,7 +120,8 @@ def test_object_larger_than_region_is_proved_infeasible(planar):
     problem = lower(ops("(push o start goal floor)"), small, modes, world)
     result = solve(problem, "final")
     assert result.status == "infeasible" and result.proved
-    assert "does not fit region goal" in result.worst_constraint
+    # Sizes to the millimetre: whole centimetres would hide a 5 mm shortfall.
+    assert "does not fit region goal (5.0 x 5.0 cm)" in result.worst_constraint
 
 
 def test_move_ends_with_the_tool_in_the_region(planar):
