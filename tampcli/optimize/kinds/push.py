@@ -5,11 +5,11 @@ Two motion phases: a free approach ending against the chosen face, then the
 pushing motion itself (the object moves with the tool, upright at its resting
 height, without turning, and only into the face: within the friction cone).
 The face is a discrete choice of the initial guess (the faces best aligned
-with the displacement first; for the arm the first one with a collision-free
-IK solution); the contact point's offset along the face is the step's grip
-parameter. The planar disk touches the face with its rim; the arm with the
-side of its open fingers, the hand pointing down, or, where the hand cannot
-come from above (a low ceiling), with its fingertips, the hand level.
+with the displacement first; for the arm the contact reachable and in
+nothing at both ends of the push); the contact point's offset along the face
+is the step's grip parameter. The planar disk touches the face with its rim;
+the arm with the side of its open fingers, the hand pointing down, or with
+its fingertips, the hand level (which passes under a low ceiling).
 """
 
 from __future__ import annotations
