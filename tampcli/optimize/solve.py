@@ -17,6 +17,7 @@ import numpy as np
 
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
+from tampcli.optimize.backends import BACKENDS
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import Kinematics, SideGrip
 from tampcli.optimize.init import keyframe_guess
@@ -54,6 +55,7 @@ class _Run:
         self.checker = problem.checker
         self.start = np.asarray(problem.world.start, dtype=float)
         self.rng = np.random.default_rng(problem.options.seed)
+        self.path_backend = BACKENDS[problem.options.nlp]
 
     def result(self, status: str, **fields) -> TrajectoryResult:
         fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")
@@ -62,8 +64,17 @@ class _Run:
                                 seconds=time.perf_counter() - self.t0, **fields)
 
     def nlp(self, evaluate, layout, x0, bounds):
-        out = solve_nlp(evaluate, layout, x0, bounds, self.problem.options.max_iterations,
-                        self.deadline)
+        """One counted SLSQP solve (final and keyframe NLPs)."""
+        return self._count(solve_nlp(evaluate, layout, x0, bounds,
+                                     self.problem.options.max_iterations, self.deadline))
+
+    def path_nlp(self, evaluate, layout, x0, bounds):
+        """One counted solve of a motion's NLP by the options' backend (`nlp`)."""
+        return self._count(self.path_backend.solve(evaluate, layout, x0, bounds,
+                                                   self.problem.options.max_iterations,
+                                                   self.deadline))
+
+    def _count(self, out):
         self.iterations += out.iterations
         self.nlp_solves += 1
         return out
