@@ -34,10 +34,10 @@ from tampcli.optimize.nlp import (
 
 INSTALL = "pip install 'tampcli[ipopt]'"
 INFINITE = 2e19  # beyond Ipopt's nlp_upper_bound_inf (1e19): no bound
-# Ipopt's return codes that mean it stopped at a cap, and which one.
-CAPS = {-1: "iterations", -4: "time", -6: "time"}
+# Ipopt's return codes (ApplicationReturnStatus) that mean it stopped at a cap.
+CAPS = {-1: "iterations", -4: "time", -5: "time"}  # iterations, CPU time, wall time
 CONVERGED = (0, 1)  # Solve_Succeeded, Solved_To_Acceptable_Level
-USER_STOP = -5
+USER_STOP = 5  # the intermediate callback said stop (deadline or stall)
 OPTIONS = {
     # Silent: no banner (sb), no iteration log.
     "print_level": 0,
@@ -128,7 +128,9 @@ class _Callbacks:
     """The problem object cyipopt calls: one cached evaluation per x serves all.
 
     The Hessian's sparsity is the one of the cost Hessian at the start; a
-    later one outside it is an error in the rows, not something to drop.
+    later one outside it is an error in the rows, not something to drop: it
+    stops the solve and is raised after it (cyipopt does not pass on every
+    exception raised in a callback).
     """
 
     def __init__(self, ev: _Evaluator, curvature: _Curvature, best: _Best, deadline: float):
@@ -137,6 +139,7 @@ class _Callbacks:
         self.structure = np.nonzero(np.tril(self.mask))
         self.problem = None  # the cyipopt.Problem, for its current iterate
         self.stopped: str | None = None
+        self.error: Exception | None = None
 
     def objective(self, x):
         return self.ev(x)[0]
@@ -159,7 +162,7 @@ class _Callbacks:
         self.ev(x)
         H = _dense_hessian(self.curvature.pairs, self.ev.slices, self.ev.nx)
         if np.any(H[~self.mask]):
-            raise ValueError("the cost Hessian left the sparsity it had at the start")
+            self.error = ValueError("the cost Hessian left the sparsity it had at the start")
         return obj_factor * H[self.structure]
 
     def intermediate(self, alg_mod, iter_count, *_):
@@ -167,6 +170,8 @@ class _Callbacks:
         self.best.iterations = iter_count
         if iterate is not None:
             self.best.track(iterate["x"])
+        if self.error is not None:
+            return False
         if time.perf_counter() > self.deadline:
             self.stopped = "time"
         elif self.best.stalled:
@@ -202,6 +207,8 @@ def solve_ipopt(evaluate, layout, x0, bounds, max_iterations: int, deadline: flo
     problem.add_option("max_iter", int(max_iterations))
     problem.add_option("max_wall_time", max(deadline - time.perf_counter(), 1e-3))
     x, info = problem.solve(x0)
+    if calls.error is not None:
+        raise calls.error
     status = int(info["status"])
     reason = calls.stopped if status == USER_STOP else CAPS.get(status)
     converged = status in CONVERGED and _violation(ev, x) <= FEASIBILITY
