@@ -99,17 +99,16 @@ class _Best:
         return self.iterations - self.progress > STALL_ITERATIONS
 
 
-class _Curvature:
-    """evaluate(x) that keeps the cost Hessian of the rows it last returned."""
+class _Kept:
+    """evaluate(x) that keeps the Rows it last returned."""
 
     def __init__(self, evaluate):
         self.evaluate = evaluate
-        self.pairs: dict = {}
+        self.rows = None
 
     def __call__(self, x):
-        rows = self.evaluate(x)
-        self.pairs = rows.cost_hess
-        return rows
+        self.rows = self.evaluate(x)
+        return self.rows
 
 
 def _dense_hessian(pairs: dict, slices: dict, nx: int) -> np.ndarray:
@@ -127,15 +126,20 @@ def _dense_hessian(pairs: dict, slices: dict, nx: int) -> np.ndarray:
 class _Callbacks:
     """The problem object cyipopt calls: one cached evaluation per x serves all.
 
-    The Hessian's sparsity is the one of the cost Hessian at the start; a
-    later one outside it is an error in the rows, not something to drop: it
-    stops the solve and is raised after it (cyipopt does not pass on every
-    exception raised in a callback).
+    Sparsity, fixed for the solve: the Jacobian's from the blocks each row
+    depends on (RowSet.pattern), the Hessian's from the cost Hessian at the
+    start (dense, a path NLP's Jacobian of (T-1) x joints columns took most of
+    Ipopt's own time at T = 40). A non-zero outside them is an error in the
+    rows, not something to drop: it stops the solve and is raised after it
+    (cyipopt does not pass on every exception raised in a callback).
     """
 
-    def __init__(self, ev: _Evaluator, curvature: _Curvature, best: _Best, deadline: float):
-        self.ev, self.curvature, self.best, self.deadline = ev, curvature, best, deadline
-        self.mask = _dense_hessian(curvature.pairs, ev.slices, ev.nx) != 0
+    def __init__(self, ev: _Evaluator, kept: _Kept, best: _Best, deadline: float):
+        self.ev, self.kept, self.best, self.deadline = ev, kept, best, deadline
+        rows = kept.rows
+        self.jac_mask = np.vstack([rows.eq.pattern(ev.slices, ev.nx),
+                                   rows.ineq.pattern(ev.slices, ev.nx)])
+        self.mask = _dense_hessian(rows.cost_hess, ev.slices, ev.nx) != 0
         self.structure = np.nonzero(np.tril(self.mask))
         self.problem = None  # the cyipopt.Problem, for its current iterate
         self.stopped: str | None = None
@@ -151,16 +155,23 @@ class _Callbacks:
         out = self.ev(x)
         return np.concatenate([out[2], out[4]])
 
+    def jacobianstructure(self):
+        return np.nonzero(self.jac_mask)
+
     def jacobian(self, x):
         out = self.ev(x)
-        return np.vstack([out[3], out[5]]).ravel()
+        J = np.vstack([out[3], out[5]])
+        if np.any(J[~self.jac_mask]):
+            self.error = ValueError("a row's Jacobian left the blocks it declared "
+                                    "(RowSet.add's depends)")
+        return J[self.jac_mask]
 
     def hessianstructure(self):
         return self.structure
 
     def hessian(self, x, _multipliers, obj_factor):
         self.ev(x)
-        H = _dense_hessian(self.curvature.pairs, self.ev.slices, self.ev.nx)
+        H = _dense_hessian(self.kept.rows.cost_hess, self.ev.slices, self.ev.nx)
         if np.any(H[~self.mask]):
             self.error = ValueError("the cost Hessian left the sparsity it had at the start")
         return obj_factor * H[self.structure]
@@ -186,8 +197,8 @@ def solve_ipopt(evaluate, layout, x0, bounds, max_iterations: int, deadline: flo
         import cyipopt
     except ImportError as err:
         raise MissingIpopt(missing()) from err
-    curvature = _Curvature(evaluate)
-    ev = _Evaluator(curvature, layout)
+    kept = _Kept(evaluate)
+    ev = _Evaluator(kept, layout)
     lo = np.array([b[0] for b in bounds], dtype=float)
     hi = np.array([b[1] for b in bounds], dtype=float)
     x0 = np.clip(np.asarray(x0, dtype=float), lo, hi)
@@ -195,7 +206,7 @@ def solve_ipopt(evaluate, layout, x0, bounds, max_iterations: int, deadline: flo
     m_eq, m = len(eq0), len(eq0) + len(ineq0)
     best = _Best(ev, x0)
     best.track(x0)
-    calls = _Callbacks(ev, curvature, best, deadline)
+    calls = _Callbacks(ev, kept, best, deadline)
     problem = cyipopt.Problem(
         n=layout.size, m=m, problem_obj=calls,
         lb=np.clip(lo, -INFINITE, INFINITE), ub=np.clip(hi, -INFINITE, INFINITE),
