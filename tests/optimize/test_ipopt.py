@@ -11,7 +11,8 @@ import pytest
 
 from tampcli.errors import OptionError
 from tampcli.optimize.backends import BACKENDS, IPOPT_FROM, Auto, Ipopt, Slsqp
-from tampcli.optimize.expr import Label
+from tampcli.optimize.collide import contact_rows
+from tampcli.optimize.expr import Label, RowSet
 from tampcli.optimize.grips import Kinematics
 from tampcli.optimize.init import final_guess, keyframe_guess
 from tampcli.optimize.layout import Layout
@@ -105,6 +106,26 @@ def test_a_hessian_outside_its_starting_sparsity_is_an_error():
 
 
 @needs_ipopt
+def test_a_jacobian_outside_its_declared_blocks_is_an_error():
+    def undeclared(x):
+        rows = small_nlp(x)
+        # A row that depends on b once b has moved, and does not say so at the start.
+        jac = {"b": np.array([[1.0]])} if x[2] > -0.9 else {}
+        rows.ineq.add(x[2] + 10.0, jac, Label("small", "far", ""))
+        return rows
+
+    with pytest.raises(ValueError, match="declared"):
+        _solve(Ipopt(), undeclared, x0=(0.0, 0.0, -1.0))
+    declared = _solve(Ipopt(), lambda x: _declared(undeclared(x)), x0=(0.0, 0.0, -1.0))
+    assert declared.status == "solved"
+
+
+def _declared(rows):
+    rows.ineq.blocks[-1] |= {"b"}
+    return rows
+
+
+@needs_ipopt
 def test_ipopt_reports_an_infeasible_nlp_by_its_worst_row():
     out = _solve(Ipopt(), lambda x: small_nlp(x, radius=0.1))  # the plane misses the disk
     assert out.status == "infeasible"
@@ -151,6 +172,52 @@ def test_the_smoothness_hessian_matches_finite_differences_of_the_gradient(wall)
             H[slices[b], slices[a]] += block.T
     np.testing.assert_allclose(H, fd, atol=1e-6)
     assert evaluate(x).cost_hess.keys() == smoothness_hessian(T, problem.n).keys()
+
+
+def test_collision_rows_with_nothing_near_declare_their_waypoints():
+    """Beyond the activation distance the rows are constant (no Jacobian), but they
+    depend on the waypoints of their sample point once something comes near."""
+    rows = RowSet()
+    contact_rows(rows, "carry", [], [("w1", 0.25), ("w2", 0.75)], None, None, {},
+                 ["wall", "self"], activation=0.05, margin=0.01)
+    layout = Layout((("w1", 2), ("w2", 2), ("w3", 2)))
+    _, jac = rows.assemble(layout.slices(), layout.size)
+    assert not jac.any()
+    expected = np.array([[True] * 4 + [False] * 2] * 2)
+    np.testing.assert_array_equal(rows.pattern(layout.slices(), layout.size), expected)
+
+
+def test_path_rows_keep_to_the_jacobian_pattern_they_start_with(wall):
+    """Through the wall and over it: rows inactive at the start become active, in the
+    blocks the start's pattern has for them."""
+    scene, modes, world = wall
+    problem = lower(ops("(pick a start)", "(place a goal)"), scene, modes, world)
+    placements, _ = final_guess(problem)
+    vals, choices = keyframe_guess(problem, placements, world.start, np.random.default_rng(0))
+    from tampcli.optimize.assemble import walk
+
+    ctx = walk(problem, vals, choices, world.start)[1]
+    T = 6
+    evaluate, layout = phase_rows_fn(problem, problem.motions[1], ctx.q_a, ctx.q_b, ctx.held,
+                                     ctx.moved, Kinematics(world), problem.checker, T, 1, None,
+                                     "carry")
+    slices = layout.slices()
+    line = np.concatenate([ctx.q_a + (ctx.q_b - ctx.q_a) * i / T for i in range(1, T)])
+    lifted = via_points(problem, ctx.q_a, ctx.q_b, T, 0.05, ctx.moved,
+                        np.random.default_rng(0)).reshape(-1)
+    start = evaluate(lifted).ineq
+    pattern = start.pattern(slices, layout.size)
+    # Sparse: a collision row depends on the one or two waypoints of its sample point.
+    assert pattern.mean() < 0.5
+    idle = ~np.any(start.assemble(slices, layout.size)[1] != 0, axis=1)
+    woke = np.zeros_like(idle)
+    for blend in np.linspace(0.0, 1.0, 6):
+        rows = evaluate((1 - blend) * line + blend * lifted).ineq
+        _, jac = rows.assemble(slices, layout.size)
+        assert not np.any(jac[~pattern])
+        np.testing.assert_array_equal(rows.pattern(slices, layout.size), pattern)
+        woke |= idle & np.any(jac != 0, axis=1)
+    assert woke.any()  # rows with no gradient at the start got one, inside the pattern
 
 
 @needs_ipopt
