@@ -1,10 +1,11 @@
-"""The SLSQP driver: one skeleton, one stage -> TrajectoryResult.
+"""The stage driver: one skeleton, one stage -> TrajectoryResult.
 
 final     -> one small NLP over the placements (no robot);
 keyframes -> the final NLP (for placements), IK keyframes, one NLP over keyframes;
 path      -> keyframes (unless `warm` has them for this skeleton), then one NLP per
-             motion phase with its two keyframes fixed; nothing is called solved
-             before `verify` passes at 10x the waypoint resolution.
+             motion phase with its two keyframes fixed, solved by the options'
+             backend (backends.py; the other stages' NLPs are SLSQP's); nothing is
+             called solved before `verify` passes at 10x the waypoint resolution.
 """
 
 from __future__ import annotations
@@ -17,13 +18,13 @@ import numpy as np
 
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
-from tampcli.optimize.backends import BACKENDS
+from tampcli.optimize.backends import BACKENDS, Slsqp
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import Kinematics, SideGrip
 from tampcli.optimize.init import keyframe_guess
 from tampcli.optimize.layout import grip_block, keyframe_block
 from tampcli.optimize.motion import solve_motion
-from tampcli.optimize.nlp import FEASIBILITY, solve_nlp, violation_at
+from tampcli.optimize.nlp import FEASIBILITY, violation_at
 from tampcli.optimize.options import OptimizeOptions
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import STAGES, TrajectoryResult
@@ -55,7 +56,6 @@ class _Run:
         self.checker = problem.checker
         self.start = np.asarray(problem.world.start, dtype=float)
         self.rng = np.random.default_rng(problem.options.seed)
-        self.path_backend = BACKENDS[problem.options.nlp]
 
     def result(self, status: str, **fields) -> TrajectoryResult:
         fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")
@@ -63,21 +63,17 @@ class _Run:
                                 iterations=self.iterations, nlp_solves=self.nlp_solves,
                                 seconds=time.perf_counter() - self.t0, **fields)
 
-    def nlp(self, evaluate, layout, x0, bounds):
-        """One counted SLSQP solve (final and keyframe NLPs)."""
-        return self._count(solve_nlp(evaluate, layout, x0, bounds,
-                                     self.problem.options.max_iterations, self.deadline))
-
-    def path_nlp(self, evaluate, layout, x0, bounds):
-        """One counted solve of a motion's NLP by the options' backend (`nlp`)."""
-        return self._count(self.path_backend.solve(evaluate, layout, x0, bounds,
-                                                   self.problem.options.max_iterations,
-                                                   self.deadline))
-
-    def _count(self, out):
+    def nlp(self, evaluate, layout, x0, bounds, backend=None):
+        """One counted solve by `backend` (SLSQP when None: the final and keyframe NLPs)."""
+        out = (backend or Slsqp()).solve(evaluate, layout, x0, bounds,
+                                         self.problem.options.max_iterations, self.deadline)
         self.iterations += out.iterations
         self.nlp_solves += 1
         return out
+
+    def path_nlp(self, evaluate, layout, x0, bounds):
+        """A motion's NLP, by the options' backend (`nlp`)."""
+        return self.nlp(evaluate, layout, x0, bounds, BACKENDS[self.problem.options.nlp])
 
 
 def solve(problem: TrajectoryProblem, stage: str, warm: TrajectoryResult | None = None,
