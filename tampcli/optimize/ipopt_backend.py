@@ -1,9 +1,10 @@
 """One Ipopt solve (through cyipopt) of the NLP that nlp.py hands SLSQP.
 
 The same `evaluate(x) -> Rows` over the same layout and bounds, the same exact
-Jacobians (dense, as the rows assemble them), the same wall-clock deadline and
+Jacobians (handed over sparse: `_Callbacks`), the same wall-clock deadline and
 stall test, and the same NlpOutcome: a solve is judged by its best point, at
-FEASIBILITY, whichever solver found it.
+FEASIBILITY, whichever solver found it. Its `kkt` is the stationarity residual
+with Ipopt's own multipliers (bounds' included) at the point Ipopt converged to.
 
 Curvature: the cost's Hessian where the rows give it (Rows.cost_hess: the path
 NLP's smoothness term) and none of the rows' (a collision distance has none we
@@ -224,6 +225,8 @@ def solve_ipopt(evaluate, layout, x0, bounds, max_iterations: int, deadline: flo
     reason = calls.stopped if status == USER_STOP else CAPS.get(status)
     converged = status in CONVERGED and _violation(ev, x) <= FEASIBILITY
     if converged:
+        # Its own point, with its multipliers, over an earlier iterate cheaper only for
+        # lying closer to the feasibility limit.
         best.x = np.array(x, copy=True)
     else:
         best.track(x)
