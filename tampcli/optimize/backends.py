@@ -17,9 +17,8 @@ if TYPE_CHECKING:
     from tampcli.optimize.nlp import NlpOutcome
 
 # Path NLPs with at least this many variables go to Ipopt under `auto`. Measured
-# (bench/results/ipopt.md, docs/ipopt.md): from 133 variables Ipopt's path stage
-# took 1.0 to 1.8 times less CPU than SLSQP's; below 100, 0.6 to 2.1 times, no
-# reliable gain.
+# (bench/results/ipopt.md, docs/ipopt.md), SLSQP's CPU time over Ipopt's on the path
+# stage: 1.0 to 1.8 from 133 variables; 0.6 to 2.1 below 100, no reliable gain.
 IPOPT_FROM = 100
 
 
