@@ -11,6 +11,7 @@ from rich.table import Table
 from tampcli import solution as solution_file
 from tampcli.bnb import BnBOptions, Event
 from tampcli.errors import ExitCode, OptionError, UsageError
+from tampcli.optimize.backends import BACKENDS
 from tampcli.optimize.options import OptimizeOptions
 from tampcli.pipeline import InputPaths, SolveOptions, solving
 
@@ -30,6 +31,7 @@ class Flag:
     metavar: str | None
     help: str
     short: str | None = None
+    choices: tuple[str, ...] | None = None
 
     @property
     def default(self):
@@ -48,6 +50,10 @@ FLAGS = (
     Flag("--first", "bnb", "first", None, None,
          "stop at the first verified solution (no search for a better skeleton)"),
     Flag("--seed", "optimize", "seed", int, None, "random seed"),
+    Flag("--nlp", "optimize", "nlp", str, None,
+         "solver of the path stage's NLPs: slsqp, ipopt (needs cyipopt: pip install "
+         "'tampcli[ipopt]'), or auto (Ipopt for the large ones where it is installed; "
+         "docs/ipopt.md)", choices=tuple(BACKENDS)),
 )
 
 
@@ -61,8 +67,10 @@ def add_parser(p) -> None:
         if flag.type is None:
             p.add_argument(*names, dest=flag.field, action="store_true", help=flag.help)
         else:
+            shown = "g" if flag.type in (int, float) else "s"
             p.add_argument(*names, dest=flag.field, type=flag.type, default=flag.default,
-                           metavar=flag.metavar, help=f"{flag.help} (default %(default)g)")
+                           choices=flag.choices, metavar=flag.metavar,
+                           help=f"{flag.help} (default %(default){shown})")
     p.add_argument("--out", metavar="FILE", help="write solution.json here (whatever the outcome)")
     p.add_argument("--video", metavar="FILE", help="render the solution to FILE (.mp4 or .gif)")
     p.add_argument("--method", choices=sorted(METHODS), default="bnb",
@@ -103,6 +111,9 @@ def _run_minlp(args, ui) -> int:
 
 def _run_bnb(args, ui) -> int:
     options = options_from_args(args)
+    missing = BACKENDS[options.optimize.nlp].missing()
+    if missing:  # refused before any solving, not at the first path stage
+        raise UsageError(missing, "tampcli solve", key="--nlp")
     render_options = None
     if args.video:  # refuse a bad video path before minutes of solving
         from tampcli.render.options import RenderOptions

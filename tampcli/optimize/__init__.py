@@ -14,6 +14,7 @@ placements handed between stages), bodies (extents, supports), grips (tool
 frame, held objects), expr (values with Jacobians over named variable
 blocks), constraints (placement, grasp, reach rows), collide (collision
 rows), stages (final / keyframe NLPs), path (per-phase path NLPs, via
-points), init (IK keyframes), nlp (the SLSQP driver), assemble (trajectory,
+points), init (IK keyframes), nlp (the SLSQP driver), backends (the path
+stage's solvers: SLSQP, Ipopt in ipopt_backend), assemble (trajectory,
 phases, object poses), verify, result.
 """

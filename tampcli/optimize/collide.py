@@ -109,7 +109,14 @@ def contact_rows(rows: RowSet, step: str, contacts, q_weights, frame: Frame | No
             g[0, 3], g[0, 4] = -ax[1] * spin, ax[0] * spin
             for block, a in P.through(g).items():
                 _acc(jac, block, r, len(keys), a[0])
-    rows.add(values, jac, labels)
+    depends = {block for block, _ in q_weights}
+    if held is not None and held.t_block is not None:
+        depends.add(held.t_block)
+    for k in keys:
+        P = poses.get(k)
+        if P is not None:
+            depends.update(P.jac)
+    rows.add(values, jac, labels, depends)
 
 
 def _allowance(margin: float) -> str:

@@ -93,11 +93,17 @@ class RowSet:
     values: list = field(default_factory=list)
     jacs: list = field(default_factory=list)
     labels: list = field(default_factory=list)  # (step name, what, unit scale)
+    # Per add: the blocks its rows may depend on at any x (its Jacobian's at this x
+    # and those declared), so a sparse solver's pattern holds for the whole solve.
+    blocks: list = field(default_factory=list)
 
-    def add(self, values, jac: Jac, label) -> None:
+    def add(self, values, jac: Jac, label, depends=()) -> None:
+        """`depends`: blocks the rows depend on where they are active, beyond those
+        `jac` has here (a collision row beyond its activation distance has none)."""
         values = np.atleast_1d(np.asarray(values, dtype=float))
         self.values.append(values)
         self.jacs.append(jac)
+        self.blocks.append(frozenset(jac) | frozenset(depends))
         if isinstance(label, list):
             self.labels.extend(label)
         else:
@@ -115,6 +121,19 @@ class RowSet:
                     jac[at:at + len(v), s] += a
             at += len(v)
         return val, jac
+
+
+    def pattern(self, slices: dict[str, slice], nx: int) -> np.ndarray:
+        """(m, nx) bool: where a row's Jacobian may be non-zero (see `blocks`)."""
+        out = np.zeros((sum(len(v) for v in self.values), nx), dtype=bool)
+        at = 0
+        for v, blocks in zip(self.values, self.blocks, strict=True):
+            for block in blocks:
+                s = slices.get(block)
+                if s is not None:
+                    out[at:at + len(v), s] = True
+            at += len(v)
+        return out
 
 
 @dataclass(frozen=True)

@@ -2,7 +2,7 @@
 the points between waypoints added lazily.
 
 `run` is the solve's bookkeeping (run.Run): the problem, its deadline, the
-checker and kinematics, and `nlp` (one counted SLSQP solve).
+checker and kinematics, and `path_nlp` (one counted solve by the options' backend).
 """
 
 from __future__ import annotations
@@ -180,7 +180,7 @@ def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
         kept = {tau for tau, d in slack.items() if d < SEED_BAND and tau != int(tau)}
     if kept:
         coarse, _ = rows(checks, lambda tau, kept=frozenset(kept): tau == int(tau) or tau in kept)
-    out = run.nlp(coarse, layout, x0, bounds)
+    out = run.path_nlp(coarse, layout, x0, bounds)
     if checks == 0:
         return out
     for _ in range(LAZY_ROUNDS):
@@ -194,8 +194,8 @@ def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
             return out
         kept |= {tau for tau, d in slack.items() if d < LAZY_BAND}
         lazy, _ = rows(checks, lambda tau, kept=frozenset(kept): tau == int(tau) or tau in kept)
-        out = run.nlp(lazy, layout, out.x, bounds)
+        out = run.path_nlp(lazy, layout, out.x, bounds)
     full, _ = rows(checks)
     if out.status != "solved" or nlp_feasible(full, layout, out.x):
         return out
-    return run.nlp(full, layout, out.x, bounds)
+    return run.path_nlp(full, layout, out.x, bounds)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from tampcli.errors import OptionError, require_int, require_number
+from tampcli.optimize.backends import BACKENDS
 
 
 @dataclass(frozen=True)
@@ -28,6 +29,9 @@ class OptimizeOptions:
         (constraints only at waypoints let an arm pass through a thin wall between them).
     seed: seed of the random perturbations (IK restarts, symmetry breaking): the same
         input and seed give the same result.
+    nlp: the solver of the path stage's NLPs, a name in backends.BACKENDS: "slsqp",
+        "ipopt" (cyipopt, an optional extra), or "auto" (Ipopt for the large ones
+        where it is installed; the final and keyframe NLPs are SLSQP's).
     """
 
     waypoints: int = 10
@@ -39,6 +43,7 @@ class OptimizeOptions:
     time_limit: float = 30.0
     interpolation_checks: int = 3
     seed: int = 0
+    nlp: str = "auto"
 
     def __post_init__(self):
         require_int(self.waypoints, "waypoints", 2)
@@ -57,3 +62,5 @@ class OptimizeOptions:
         require_int(self.interpolation_checks, "interpolation_checks", 0)
         if isinstance(self.seed, bool) or not isinstance(self.seed, int):
             raise OptionError("seed", f"must be an integer, got {self.seed!r}")
+        if self.nlp not in BACKENDS:
+            raise OptionError("nlp", f"must be one of {', '.join(BACKENDS)}, got {self.nlp!r}")

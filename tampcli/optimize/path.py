@@ -89,6 +89,7 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     frac = np.array([s for _, _, s in pts])[:, None]
     matrices = body_matrices(poses)
     spec = held_spec(held)
+    hess = smoothness_hessian(T, n)
 
     def evaluate(x):
         w = x.reshape(T - 1, n)
@@ -98,6 +99,7 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         rows.cost = float(np.sum(d * d))
         for i in range(1, T):
             rows.cost_grad[waypoint_block(i)] = 2.0 * (d[i - 1] - d[i])
+        rows.cost_hess = hess
         _step_rows(rows, d, T, label)
         samples_q = (1 - frac) * qs[where] + frac * qs[where + 1]
         contacts = checker.distances_many(samples_q, matrices, spec, ignores, opts.activation)
@@ -117,6 +119,15 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
         return rows
 
     return evaluate, layout
+
+
+def smoothness_hessian(T: int, n: int) -> dict:
+    """The cost's second derivatives (constant): 4 I at each interior waypoint, -2 I
+    between neighbours. Ipopt steps with it; SLSQP builds its own from gradients."""
+    eye = np.eye(n)
+    out = {(waypoint_block(i), waypoint_block(i)): 4.0 * eye for i in range(1, T)}
+    out.update({(waypoint_block(i), waypoint_block(i + 1)): -2.0 * eye for i in range(1, T - 1)})
+    return out
 
 
 def _step_rows(rows: Rows, d: np.ndarray, T: int, label: str) -> None:

@@ -7,8 +7,8 @@ import time
 
 import numpy as np
 
+from tampcli.optimize.backends import BACKENDS, Slsqp
 from tampcli.optimize.grips import Kinematics
-from tampcli.optimize.nlp import solve_nlp
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import TrajectoryResult
 
@@ -36,9 +36,14 @@ class Run:
                                 iterations=self.iterations, nlp_solves=self.nlp_solves,
                                 seconds=time.perf_counter() - self.t0, **fields)
 
-    def nlp(self, evaluate, layout, x0, bounds):
-        out = solve_nlp(evaluate, layout, x0, bounds, self.problem.options.max_iterations,
-                        self.deadline)
+    def nlp(self, evaluate, layout, x0, bounds, backend=None):
+        """One counted solve by `backend` (SLSQP when None: the final and keyframe NLPs)."""
+        out = (backend or Slsqp()).solve(evaluate, layout, x0, bounds,
+                                         self.problem.options.max_iterations, self.deadline)
         self.iterations += out.iterations
         self.nlp_solves += 1
         return out
+
+    def path_nlp(self, evaluate, layout, x0, bounds):
+        """A motion's NLP, by the options' backend (`nlp`)."""
+        return self.nlp(evaluate, layout, x0, bounds, BACKENDS[self.problem.options.nlp])

@@ -32,6 +32,9 @@ class Rows:
     ineq: RowSet = field(default_factory=RowSet)
     cost: float = 0.0
     cost_grad: dict = field(default_factory=dict)  # block -> (size,)
+    # (block a, block b) -> (size a, size b) second derivatives of the cost, each pair
+    # once (a before b in the layout); empty where not given (SLSQP does not use it).
+    cost_hess: dict = field(default_factory=dict)
 
 
 def final_layout(problem: TrajectoryProblem) -> Layout:
