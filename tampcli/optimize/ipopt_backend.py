@@ -3,8 +3,8 @@
 The same `evaluate(x) -> Rows` over the same layout and bounds, the same exact
 Jacobians (handed over sparse: `_Callbacks`), the same wall-clock deadline and
 stall test, and the same NlpOutcome: a solve is judged by its best point, at
-FEASIBILITY, whichever solver found it. Its `kkt` is the stationarity residual
-with Ipopt's own multipliers (bounds' included) at the point Ipopt converged to.
+FEASIBILITY, whichever solver found it. Its `kkt` is the certificate of
+optimize/kkt.py at that point, as for SLSQP's answers.
 
 Curvature: the cost's Hessian where the rows give it (Rows.cost_hess: the path
 NLP's smoothness term) and none of the rows' (a collision distance has none we
@@ -23,6 +23,7 @@ import time
 
 import numpy as np
 
+from tampcli.optimize.kkt import certificate
 from tampcli.optimize.nlp import (
     FEASIBILITY,
     STALL_GAIN,
@@ -232,8 +233,7 @@ def solve_ipopt(evaluate, layout, x0, bounds, max_iterations: int, deadline: flo
         best.track(x)
     message = info["status_msg"]
     message = message.decode() if isinstance(message, bytes) else str(message)
-    return _outcome(ev, best.x, reason, best.iterations, message,
-                    info if converged else None)
+    return _outcome(ev, best.x, reason, best.iterations, message, bounds)
 
 
 def _violation(ev, x) -> float:
@@ -241,7 +241,7 @@ def _violation(ev, x) -> float:
     return violation_of(out[2], out[4])[0]
 
 
-def _outcome(ev, x, reason, iterations, message, info) -> NlpOutcome:
+def _outcome(ev, x, reason, iterations, message, bounds) -> NlpOutcome:
     cost, grad, eq, jeq, ineq, jin, leq, lin = ev(x)
     v, i, kind = violation_of(eq, ineq)
     if v <= FEASIBILITY:
@@ -250,11 +250,9 @@ def _outcome(ev, x, reason, iterations, message, info) -> NlpOutcome:
         status = "limit" if reason in ("time", "iterations") else "infeasible"
         value = eq[i] if kind == "eq" else ineq[i]
         worst = (leq if kind == "eq" else lin)[i].words(value)
-    kkt = None
-    if info is not None and status == "solved":
-        # Ipopt's own multipliers at its own point: grad f + J' lambda - z_L + z_U = 0.
-        jac = np.vstack([jeq, jin])
-        residual = grad + jac.T @ info["mult_g"] - info["mult_x_L"] + info["mult_x_U"]
-        kkt = float(np.linalg.norm(residual))
+    # The same certificate as SLSQP's answers (optimize/kkt.py: multipliers fitted at
+    # the point), so the two backends' certificates read alike.
+    kkt = certificate(grad, eq, jeq, ineq, jin, leq, lin, x, bounds, ev.slices) \
+        if status == "solved" else None
     return NlpOutcome(x=x, status=status, cost=float(cost), violation=v, worst=worst,
                       iterations=iterations, kkt=kkt, message=message, stopped=reason)

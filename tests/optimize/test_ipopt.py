@@ -63,8 +63,8 @@ def test_ipopt_reaches_slsqps_optimum_of_a_small_nlp():
     np.testing.assert_allclose(ipopt.x, slsqp.x, atol=1e-5)
     assert ipopt.cost == pytest.approx(slsqp.cost, abs=1e-5)
     assert ipopt.violation <= FEASIBILITY and ipopt.worst is None
-    # Stationarity with Ipopt's own multipliers (bound, plane and disk all active).
-    assert ipopt.kkt is not None and ipopt.kkt < 1e-5
+    # The certificate at its answer (bound, plane and disk all active).
+    assert ipopt.kkt is not None and ipopt.kkt.stationarity < 1e-5 and ipopt.kkt.dual_feasible
     assert ipopt.iterations > 0 and ipopt.stopped is None
 
 
