@@ -15,5 +15,7 @@ frame, held objects), expr (values with Jacobians over named variable
 blocks), constraints (placement, grasp, reach rows), collide (collision
 rows), stages (final / keyframe NLPs), path (per-phase path NLPs, via
 points), init (IK keyframes), nlp (the SLSQP driver), assemble (trajectory,
-phases, object poses), verify, result.
+phases, object poses), verify, result; relaxed (the planar skeleton's
+collision-free convex QP: a proved lower bound of its cost) on convex_qp (a
+QP solved with a duality certificate).
 """

@@ -24,6 +24,8 @@ bound on the cost of every trajectory `validate` accepts (its tolerances are
 the relaxation's slack), and so, for a prefix, on every completion (what is
 added costs >= 0). Each QP is solved with a certificate (convex_qp), so the
 bound is `proved`; on any other robot there is no such relaxation (None).
+Each step's kind adds its rows (ModeKind.relax), so a kind that adds none
+(a move, a symbolic action) is relaxed to its motion alone.
 """
 
 from __future__ import annotations
@@ -37,7 +39,7 @@ import numpy as np
 from tampcli.optimize.bodies import TOUCH_TOLERANCE
 from tampcli.optimize.convex_qp import ConvexQP, solve_convex_qp
 from tampcli.optimize.kinds.push_check import PENETRATION, SLACK, STILL
-from tampcli.optimize.kinds.push_contact import BOX_FACES, PUSH_FRICTION, face_of
+from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, face_of
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.verify import INSIDE, LIMIT
 
@@ -61,15 +63,15 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
         return None
     if problem.error is not None:
         return RelaxedBound(math.inf, "proved")
-    box_pushes = [s.index for s in problem.steps
-                  if s.kind.name == "push" and not problem.bodies[s.obj].disk]
-    assignments = [dict(zip(box_pushes, faces, strict=True))
-                   for faces in itertools.product(BOX_FACES, repeat=len(box_pushes))]
-    if len(assignments) > MAX_FACE_ASSIGNMENTS:
-        assignments = [{}]
+    choices = [(s.index, s.kind.relax_faces(problem, s)) for s in problem.steps]
+    choices = [(i, faces) for i, faces in choices if faces]
+    assignments = [{}]
+    if math.prod(len(faces) for _, faces in choices) <= MAX_FACE_ASSIGNMENTS:
+        assignments = [dict(zip([i for i, _ in choices], pick, strict=True))
+                       for pick in itertools.product(*[faces for _, faces in choices])]
     best, proved = math.inf, True
     for faces in assignments:
-        out = solve_convex_qp(_Builder(problem, faces).qp())
+        out = solve_convex_qp(Builder(problem, faces).qp())
         best = min(best, out.value)
         proved = proved and out.proved
     return RelaxedBound(float(max(best, 0.0)), "proved" if proved else "heuristic", len(assignments))
@@ -98,9 +100,10 @@ def _polygon(support) -> list[tuple[np.ndarray, float]]:
     return out
 
 
-class _Builder:
+class Builder:
     """The QP of one skeleton for one assignment of pushed faces: variables are
-    2-vectors (keyframes, grip offsets, placements) with boxes; rows in lists."""
+    2-vectors (keyframes, grip offsets, placements) with boxes; rows in lists. Each
+    step's kind adds its rows (ModeKind.relax) through `grasp`, `place`, `push`."""
 
     def __init__(self, problem: TrajectoryProblem, faces: dict[int, float]):
         self.problem, self.faces = problem, faces
@@ -115,16 +118,10 @@ class _Builder:
         # Where each movable object's centre is: a constant (x, y) or a variable.
         self.pos: dict[str, np.ndarray | int] = {
             n: np.array(i.pose[:2]) for n, i in problem.bodies.items() if not i.fixed}
-        self.offsets: dict[int, tuple[int, np.ndarray]] = {}  # grasp step -> (var, extent)
-        regions = {r.name: r for r in problem.scene.regions}
+        self.offsets: dict[int, int] = {}  # grasp step -> its offset's variable
+        self.regions = {r.name: r for r in problem.scene.regions}
         for step in problem.steps:
-            name = step.kind.name
-            if name == "grasp":
-                self._grasp(step)
-            elif name == "place":
-                self._place(step, regions)
-            elif name == "push":
-                self._push(step, regions)
+            step.kind.relax(self, step)
 
     def var(self, lo, hi) -> int:
         i = len(self.lo)
@@ -141,7 +138,7 @@ class _Builder:
             e = np.eye(2)[axis]
             self.eq.append(({v: c * e for v, c in terms.items()}, -float(const[axis])))
 
-    def _centre(self, obj: str, q: int, offset: int, extent: np.ndarray) -> None:
+    def _centre(self, obj: str, q: int, offset: int) -> None:
         """obj's centre is q + offset (a new variable when it was a constant)."""
         at = self.pos.get(obj)
         if isinstance(at, np.ndarray):
@@ -155,7 +152,8 @@ class _Builder:
             self.ineq.append(({v: d}, h))
         return v
 
-    def _grasp(self, step) -> None:
+    def grasp(self, step) -> None:
+        """The object's centre is the keyframe plus an offset in the grown footprint."""
         info = self.problem.bodies[step.obj]
         rim = self.problem.scene.robot.radius + TOUCH_TOLERANCE
         if info.disk:
@@ -171,17 +169,17 @@ class _Builder:
         v = self._offset(support, reach)
         (k,) = step.keyframes
         if step.obj in self.pos:
-            self._centre(step.obj, self.keyframes[k], v, np.zeros(2))
-        self.offsets[step.index] = (v, reach)
+            self._centre(step.obj, self.keyframes[k], v)
+        self.offsets[step.index] = v
         self.pos.pop(step.obj, None)  # held: where it is follows the disk
 
-    def _placement(self, step, regions, q: int, offset: int) -> int:
+    def _placement(self, step, q: int, offset: int) -> int:
         """A variable for obj's centre after the step = q + offset, inside its target."""
         info = self.problem.bodies[step.obj]
         qlo, qhi = self.box(q)
         olo, ohi = self.box(offset)
         lo, hi = qlo + olo, qhi + ohi
-        ext = _footprint_extent(info)
+        ext, regions = _footprint_extent(info), self.regions
         if step.target in regions:
             r = regions[step.target]
             lo = np.maximum(lo, np.asarray(r.lower) + ext - INSIDE)
@@ -211,14 +209,16 @@ class _Builder:
                 else:
                     self.ineq.append(({c: a, at: -a}, half[axis]))
 
-    def _place(self, step, regions) -> None:
+    def place(self, step) -> None:
+        """Released where the keyframe plus the grasp's offset puts it, inside its target."""
         (k,) = step.keyframes
         held = self.offsets.get(step.grasp_step)
-        if held is None:
-            return
-        self._placement(step, regions, self.keyframes[k], held[0])
+        if held is not None:
+            self._placement(step, self.keyframes[k], held)
 
-    def _push(self, step, regions) -> None:
+    def push(self, step) -> None:
+        """Behind a face at the first keyframe, moved with the disk to the second, within
+        the face's cone, into the target."""
         k0, k1 = step.keyframes
         info = self.problem.bodies[step.obj]
         rim = self.problem.scene.robot.radius
@@ -226,15 +226,17 @@ class _Builder:
         w = self._face_offset(info, rim, angle)  # the object's centre minus the disk's
         q0, q1 = self.keyframes[k0], self.keyframes[k1]
         if step.obj in self.pos:
-            self._centre(step.obj, q0, w, np.zeros(2))
-        self._placement(step, regions, q1, w)  # the same offset all along the push
+            self._centre(step.obj, q0, w)
+        self._placement(step, q1, w)  # the same offset all along the push
         if angle is not None:
             self._cone(info, angle, q0, q1)
 
     def _face_offset(self, info, rim: float, angle: float | None) -> int:
-        """The pusher's rim on the face `angle` (inward normal, object frame) of a
-        box, from 1 mm inside it to TOUCH_TOLERANCE away, anywhere along it; with
-        no face (a disk, or too many pushes), around the whole footprint."""
+        """The pusher beyond the face `angle` (inward normal, object frame) of a box,
+        as validate attributes a contact to a face: its centre further out along that
+        normal than along the other axis, the rim touching (TOUCH_TOLERANCE away at
+        most, PENETRATION in at most, a corner's diagonal included). With no face (a
+        disk, or too many pushes), around the whole footprint."""
         R = _rot(info.pose[3])
         out = rim + TOUCH_TOLERANCE
         if angle is None:
@@ -248,7 +250,8 @@ class _Builder:
         e = R @ np.array([-math.sin(angle), math.cos(angle)])
         reach = float(_footprint_extent(info).max()) + 2 * out  # holds at any yaw
         w = self.var([-reach] * 2, [reach] * 2)
-        self.ineq += [({w: n}, face.depth + out), ({w: -n}, PENETRATION - face.depth - rim),
+        near = (rim - PENETRATION) / math.sqrt(2)  # at a corner, on its diagonal
+        self.ineq += [({w: n}, face.depth + out), ({w: -n}, -face.depth - near),
                       ({w: e}, face.width + out), ({w: -e}, face.width + out)]
         return w
 
