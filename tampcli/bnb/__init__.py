@@ -257,8 +257,8 @@ class _Search:
             trial.rank, trial.names, trial.symbolic, outcome, trial.proved_bound,
             "proved" if prune.node.proved else "heuristic", None, None, None,
             self.clock() - trial.started, prune.reason))
-        self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, outcome=outcome,
-                        bound=trial.proved_bound, message=prune.reason))
+        self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, "relaxation",
+                        outcome, bound=trial.proved_bound, message=prune.reason))
         return True
 
     def _unproved(self, trial: _Trial) -> None:

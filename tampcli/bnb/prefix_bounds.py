@@ -21,7 +21,7 @@ from typing import Any, Protocol
 
 class RelaxedValue(Protocol):
     value: float  # a lower bound of the trajectory cost (inf: no trajectory at all)
-    kind: str  # "proved" | "heuristic"
+    kind: str  # "proved" | "heuristic"  (optional: `why`, what makes it infeasible)
 
 
 Relax = Callable[[Sequence[Any]], RelaxedValue | None]
@@ -32,6 +32,7 @@ class NodeBound:
     prefix: tuple[str, ...]
     value: float  # trajectory cost of every completion is >= value (inf: infeasible)
     proved: bool
+    why: str | None = None  # what makes the relaxation infeasible, when said
 
 
 @dataclass(frozen=True)
@@ -57,7 +58,7 @@ class PrefixBounds:
         if names not in self.memo:
             out = self.relax(ops)
             self.memo[names] = None if out is None else NodeBound(
-                names, float(out.value), out.kind == "proved")
+                names, float(out.value), out.kind == "proved", getattr(out, "why", None))
         return self.memo[names]
 
     def judge(self, ops: Sequence[Any], names: tuple[str, ...], symbolic: float,
@@ -82,8 +83,9 @@ class PrefixBounds:
             where = "the skeleton" if whole else f"the prefix {' '.join(names[:i])}"
             label = "proved" if node.proved else "heuristic"
             if math.isinf(node.value):
+                why = f": {node.why}" if node.why else ""
                 return node, Prune(node, f"the collision-free relaxation of {where} is "
-                                         f"infeasible ({label})")
+                                         f"infeasible ({label}){why}")
             total = node.value + weight * least
             if incumbent is not None and total >= incumbent - tie:
                 return node, Prune(node, f"relaxed bound of {where} {total:.4g} >= incumbent "

@@ -55,6 +55,7 @@ class RelaxedBound:
     value: float
     kind: str
     qps: int = 0  # QPs solved
+    why: str | None = None  # what makes it infeasible, in words
 
 
 def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
@@ -62,7 +63,7 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
     if not problem.planar:
         return None
     if problem.error is not None:
-        return RelaxedBound(math.inf, "proved")
+        return RelaxedBound(math.inf, "proved", why=problem.error)
     choices = [(s.index, s.kind.relax_faces(problem, s)) for s in problem.steps]
     choices = [(i, faces) for i, faces in choices if faces]
     assignments = [{}]
@@ -74,7 +75,12 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
         out = solve_convex_qp(Builder(problem, faces).qp())
         best = min(best, out.value)
         proved = proved and out.proved
-    return RelaxedBound(float(max(best, 0.0)), "proved" if proved else "heuristic", len(assignments))
+    kind, why = "proved" if proved else "heuristic", None
+    if math.isinf(best) and assignments != [{}]:
+        hull = solve_convex_qp(Builder(problem, {}).qp())  # no face, no cone
+        if not math.isinf(hull.value):
+            why = "no pushed face's friction cone leads into the target (a drag or a pull)"
+    return RelaxedBound(float(max(best, 0.0)), kind, len(assignments), why)
 
 
 def _rot(yaw: float) -> np.ndarray:

@@ -116,6 +116,7 @@ def test_the_seed_push_is_proved_infeasible_by_the_friction_cone(planar):
     out = relaxed_bound(problem)
     assert out.kind == "proved" and math.isinf(out.value)
     assert out.qps == 4  # one QP per face
+    assert "friction cone" in out.why
     assert solve(problem, "keyframes").status == "infeasible"
 
 
