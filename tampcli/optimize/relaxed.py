@@ -8,7 +8,8 @@ carries or pushes) the trajectory problem without collisions is a convex QP:
   cost sum |dq|^2 >= |q_k - q_{k-1}|^2 / T (Cauchy-Schwarz), q_{-1} the start;
 - a grasp: the object's centre = q + v, v one offset for the whole hold, in
   the footprint grown by the rim (a rounded rectangle or a disk), relaxed to
-  16 of its supporting half-planes;
+  16 of its supporting half-planes (the held object may drift from v by
+  validate's RIGID per motion phase);
 - a place: the centre = q + v inside its region, the footprint's axis-aligned
   half extents inward (the yaw is the start's: nothing turns it); on a body,
   the centre over the body's top face;
@@ -41,7 +42,8 @@ from tampcli.optimize.convex_qp import ConvexQP, solve_convex_qp
 from tampcli.optimize.kinds.push_check import PENETRATION, SLACK, STILL
 from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, face_of
 from tampcli.optimize.problem import TrajectoryProblem
-from tampcli.optimize.verify import INSIDE, LIMIT
+from tampcli.optimize.verify import INSIDE, LIMIT, RIGID
+from tampcli.optimize.verify import STILL as STILL_OBJECT
 
 DIRECTIONS = 16  # supporting half-planes of a grip's offset set (a polygon around it)
 MAX_FACE_ASSIGNMENTS = 64  # past this, pushes are relaxed to their offset hull, no cone
@@ -116,7 +118,6 @@ class Builder:
         self.lo: list[float] = []
         self.hi: list[float] = []
         self.ineq: list[tuple[dict[int, np.ndarray], float]] = []  # sum a_v'x_v <= b
-        self.eq: list[tuple[dict[int, np.ndarray], float]] = []
         world = problem.world
         self.qlo = np.asarray(world.lower, dtype=float) - LIMIT
         self.qhi = np.asarray(world.upper, dtype=float) + LIMIT
@@ -124,7 +125,7 @@ class Builder:
         # Where each movable object's centre is: a constant (x, y) or a variable.
         self.pos: dict[str, np.ndarray | int] = {
             n: np.array(i.pose[:2]) for n, i in problem.bodies.items() if not i.fixed}
-        self.offsets: dict[int, int] = {}  # grasp step -> its offset's variable
+        self.offsets: dict[int, tuple[int, int]] = {}  # grasp step -> (offset var, keyframe)
         self.regions = {r.name: r for r in problem.scene.regions}
         for step in problem.steps:
             step.kind.relax(self, step)
@@ -138,19 +139,23 @@ class Builder:
     def box(self, i: int) -> tuple[np.ndarray, np.ndarray]:
         return np.array(self.lo[i:i + 2]), np.array(self.hi[i:i + 2])
 
-    def equal(self, terms: dict[int, float], const: np.ndarray) -> None:
-        """sum coef * x_v + const = 0, both coordinates."""
-        for axis in (0, 1):
-            e = np.eye(2)[axis]
-            self.eq.append(({v: c * e for v, c in terms.items()}, -float(const[axis])))
+    def near(self, terms: dict[int, float], const: np.ndarray, slack: float) -> None:
+        """|sum coef * x_v + const| <= slack, both coordinates."""
+        for sign in (1.0, -1.0):
+            for axis in (0, 1):
+                e = sign * np.eye(2)[axis]
+                self.ineq.append(({v: c * e for v, c in terms.items()},
+                                  slack - sign * float(const[axis])))
 
     def _centre(self, obj: str, q: int, offset: int) -> None:
-        """obj's centre is q + offset (a new variable when it was a constant)."""
+        """obj's centre is q + offset (it may have crept by validate's STILL at each
+        mode switch since it was last put down)."""
         at = self.pos.get(obj)
+        slack = STILL_OBJECT * len(self.problem.steps)
         if isinstance(at, np.ndarray):
-            self.equal({q: 1.0, offset: 1.0}, -at)
+            self.near({q: 1.0, offset: 1.0}, -at, slack)
         else:
-            self.equal({q: 1.0, offset: 1.0, at: -1.0}, np.zeros(2))
+            self.near({q: 1.0, offset: 1.0, at: -1.0}, np.zeros(2), slack)
 
     def _offset(self, support, reach: float) -> int:
         v = self.var([-reach] * 2, [reach] * 2)
@@ -176,22 +181,24 @@ class Builder:
         (k,) = step.keyframes
         if step.obj in self.pos:
             self._centre(step.obj, self.keyframes[k], v)
-        self.offsets[step.index] = v
+        self.offsets[step.index] = (v, k)
         self.pos.pop(step.obj, None)  # held: where it is follows the disk
 
-    def _placement(self, step, q: int, offset: int) -> int:
-        """A variable for obj's centre after the step = q + offset, inside its target."""
+    def _placement(self, step, q: int, offset: int, phases: int) -> int:
+        """A variable for obj's centre after the step = q + offset, inside its target;
+        up to `phases` motion phases' drift (validate's RIGID each) away from it."""
         info = self.problem.bodies[step.obj]
+        drift = RIGID * phases + STILL_OBJECT * len(self.problem.steps)
         qlo, qhi = self.box(q)
         olo, ohi = self.box(offset)
-        lo, hi = qlo + olo, qhi + ohi
+        lo, hi = qlo + olo - drift, qhi + ohi + drift
         ext, regions = _footprint_extent(info), self.regions
         if step.target in regions:
             r = regions[step.target]
             lo = np.maximum(lo, np.asarray(r.lower) + ext - INSIDE)
             hi = np.minimum(hi, np.asarray(r.upper) - ext + INSIDE)
         c = self.var(lo, np.maximum(hi, lo))
-        self.equal({c: 1.0, q: -1.0, offset: -1.0}, np.zeros(2))
+        self.near({c: 1.0, q: -1.0, offset: -1.0}, np.zeros(2), drift)
         if step.target not in regions and step.support is not None:
             self._over(c, step.support)
         if (hi < lo).any():  # an empty box: infeasible, as a row says
@@ -220,7 +227,8 @@ class Builder:
         (k,) = step.keyframes
         held = self.offsets.get(step.grasp_step)
         if held is not None:
-            self._placement(step, self.keyframes[k], held)
+            v, since = held
+            self._placement(step, self.keyframes[k], v, k - since)
 
     def push(self, step) -> None:
         """Behind a face at the first keyframe, moved with the disk to the second, within
@@ -233,7 +241,7 @@ class Builder:
         q0, q1 = self.keyframes[k0], self.keyframes[k1]
         if step.obj in self.pos:
             self._centre(step.obj, q0, w)
-        self._placement(step, q1, w)  # the same offset all along the push
+        self._placement(step, q1, w, 1)  # the same offset all along the push
         if angle is not None:
             self._cone(info, angle, q0, q1)
 
@@ -293,7 +301,8 @@ class Builder:
                     P[k + a, prev_i + a] -= 2.0 / T
                     P[prev_i + a, k + a] -= 2.0 / T
             prev_i = k
-        return ConvexQP(P, c, r, *_matrix(self.ineq, n), *_matrix(self.eq, n),
+        # Every equality holds up to validate's tolerances: rows of A, none in E.
+        return ConvexQP(P, c, r, *_matrix(self.ineq, n), np.zeros((0, n)), np.zeros(0),
                         np.array(self.lo), np.array(self.hi))
 
 
