@@ -17,9 +17,11 @@ carries or pushes) the trajectory problem without collisions is a convex QP:
   (each assignment of faces is a QP of its own; the bound is their minimum),
   the displacement within that face's friction cone; a disk's push keeps its
   offset on a circle (relaxed as a grasp's) and drops the cone;
-- joint limits on every keyframe.
+- joint limits on every keyframe;
+- a box put down apart from every upright box resting beside it: a
+  disjunction over separating axes, branched on (relaxed_apart.py).
 
-Everything else (collisions, objects kept apart, stability, a move's target,
+Everything else (collisions in motion, disks and meshes kept apart, stability, a move's target,
 a symbolic action) is dropped, which only lowers the value: it is a lower
 bound on the cost of every trajectory `validate` accepts (its tolerances are
 the relaxation's slack), and so, for a prefix, on every completion (what is
@@ -42,11 +44,13 @@ from tampcli.optimize.convex_qp import ConvexQP, solve_convex_qp
 from tampcli.optimize.kinds.push_check import PENETRATION, SLACK, STILL
 from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, face_of
 from tampcli.optimize.problem import TrajectoryProblem
+from tampcli.optimize.relaxed_apart import Apart, apart, solve_apart
 from tampcli.optimize.verify import INSIDE, LIMIT, RIGID
 from tampcli.optimize.verify import STILL as STILL_OBJECT
 
 DIRECTIONS = 16  # supporting half-planes of a grip's offset set (a polygon around it)
 MAX_FACE_ASSIGNMENTS = 64  # past this, pushes are relaxed to their offset hull, no cone
+MAX_QPS = 64  # per bound, shared by the face assignments' branch and bound on apart rows
 
 
 @dataclass(frozen=True)
@@ -72,17 +76,27 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
     if math.prod(len(faces) for _, faces in choices) <= MAX_FACE_ASSIGNMENTS:
         assignments = [dict(zip([i for i, _ in choices], pick, strict=True))
                        for pick in itertools.product(*[faces for _, faces in choices])]
-    best, proved = math.inf, True
+    budget = max(9, MAX_QPS // len(assignments))
+    best, proved, qps = math.inf, True, 0
     for faces in assignments:
-        out = solve_convex_qp(Builder(problem, faces).qp())
-        best = min(best, out.value)
-        proved = proved and out.proved
-    kind, why = "proved" if proved else "heuristic", None
-    if math.isinf(best) and assignments != [{}]:
-        hull = solve_convex_qp(Builder(problem, {}).qp())  # no face, no cone
-        if not math.isinf(hull.value):
-            why = "no pushed face's friction cone leads into the target (a drag or a pull)"
-    return RelaxedBound(float(max(best, 0.0)), kind, len(assignments), why)
+        builder = Builder(problem, faces)
+        out, solved = solve_apart(builder.qp(), builder.aparts, budget)
+        best, proved, qps = min(best, out.value), proved and out.proved, qps + solved
+    kind = "proved" if proved else "heuristic"
+    why = _why_infeasible(problem, budget, assignments != [{}]) if math.isinf(best) else None
+    return RelaxedBound(float(max(best, 0.0)), kind, qps, why)
+
+
+def _why_infeasible(problem, budget: int, pushes: bool) -> str | None:
+    """The part of the relaxation that makes it infeasible, when one alone does."""
+    hull = Builder(problem, {})  # no face chosen: no friction cone
+    if math.isinf(solve_convex_qp(hull.qp()).value):
+        return None
+    if pushes and not math.isinf(solve_apart(hull.qp(), hull.aparts, budget)[0].value):
+        return "no pushed face's friction cone leads into the target (a drag or a pull)"
+    if hull.aparts:
+        return "what is put down overlaps what rests there, wherever it goes"
+    return None
 
 
 def _rot(yaw: float) -> np.ndarray:
@@ -126,6 +140,7 @@ class Builder:
         self.pos: dict[str, np.ndarray | int] = {
             n: np.array(i.pose[:2]) for n, i in problem.bodies.items() if not i.fixed}
         self.offsets: dict[int, tuple[int, int]] = {}  # grasp step -> (offset var, keyframe)
+        self.aparts: list[Apart] = []
         self.regions = {r.name: r for r in problem.scene.regions}
         for step in problem.steps:
             step.kind.relax(self, step)
@@ -203,6 +218,11 @@ class Builder:
             self._over(c, step.support)
         if (hi < lo).any():  # an empty box: infeasible, as a row says
             self.ineq.append(({c: np.zeros(2)}, -1.0))
+        beside = [(n, at) for n, at in self.pos.items() if n != step.obj]
+        beside += [(n, np.array(i.pose[:2])) for n, i in self.problem.bodies.items()
+                   if i.fixed and n != step.support]
+        self.aparts += [a for n, at in beside
+                        if (a := apart(self.problem, step.obj, c, n, at)) is not None]
         self.pos[step.obj] = c
         return c
 

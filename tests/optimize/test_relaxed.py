@@ -14,10 +14,11 @@ from tampcli.optimize.convex_qp import (
 )
 from tampcli.optimize.problem import lower
 from tampcli.optimize.relaxed import DIRECTIONS, relaxed_bound
+from tampcli.optimize.relaxed_apart import Apart
 from tampcli.optimize.solve import solve
 from tampcli.optimize.verify import INSIDE, RIGID, STILL
 
-from .helpers import ops
+from .helpers import ROOT, ops
 
 
 def _qp(P, c, A=(), b=(), E=(), f=(), lo=-10.0, hi=10.0, r=0.0):
@@ -128,3 +129,36 @@ def test_an_arm_has_no_such_relaxation(wall):
     scene, modes, world = wall
     problem = lower(ops("(pick a start)", "(place a goal)"), scene, modes, world)
     assert relaxed_bound(problem) is None
+
+
+def test_an_apart_row_holds_exactly_where_its_option_does():
+    rng = np.random.default_rng(1)
+    u, w = np.array([0.6, 0.8]), 0.1
+    for other in (np.array([0.3, -0.2]), 2):
+        pair = Apart(0, other, ((u, w),))
+        for _ in range(100):
+            x = rng.uniform(-1, 1, 4)
+            p = other if isinstance(other, np.ndarray) else x[2:4]
+            a, b = pair.row(0, 4)
+            assert (a @ x <= b) == (u @ (x[:2] - p) >= w)
+
+
+def test_a_blocked_region_is_proved_full():
+    """planar-tamp p02: b fills the goal region; a cannot be put down beside it (no
+    separating axis leaves room), with b moved first it can."""
+    from tampcli.geometry.world import World
+    from tampcli.pipeline import InputPaths, Timers, read_inputs
+
+    inputs = read_inputs(InputPaths(str(ROOT / "domains/planar-tamp/domain.pddl"),
+                                    str(ROOT / "problems/planar-tamp/p02.pddl")), Timers())
+    by_name = {op.name: op for op in inputs.task.operators}
+    with World(inputs.scene) as world:
+        def bound(*names):
+            return relaxed_bound(lower([by_name[n] for n in names], inputs.scene,
+                                       inputs.modes, world, domain=inputs.domain))
+        blocked = bound("(pick a ground)", "(place a goal)")
+        assert blocked.kind == "proved" and math.isinf(blocked.value)
+        assert "overlaps" in blocked.why
+        cleared = bound("(pick b goal)", "(place b ground)", "(pick a ground)",
+                        "(place a goal)")
+        assert cleared.kind == "proved" and 0.0 < cleared.value < math.inf
