@@ -16,6 +16,7 @@ blocks), constraints (placement, grasp, reach rows), collide (collision
 rows), stages (final / keyframe NLPs), path (per-phase path NLPs, via
 points), init (IK keyframes), nlp (the SLSQP driver), assemble (trajectory,
 phases, object poses), verify, result; relaxed (the planar skeleton's
-collision-free convex QP: a proved lower bound of its cost) on convex_qp (a
-QP solved with a duality certificate).
+convex QP without collisions in motion: a proved lower bound of its cost)
+on convex_qp (a QP solved with a duality certificate) and relaxed_apart
+(boxes put down apart: a disjunction branched on).
 """

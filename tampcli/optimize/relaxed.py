@@ -2,7 +2,8 @@
 completion of a prefix: the seed's V(d_0:k) with the rest relaxed (§5).
 
 For the planar robot (q = the disk's x, y; it never turns, nor does what it
-carries or pushes) the trajectory problem without collisions is a convex QP:
+carries or pushes) the trajectory problem without collisions in motion is a
+convex QP (but for objects kept apart: a disjunction of QPs):
 
 - cost: each motion phase has T segments from keyframe q_{k-1} to q_k, so its
   cost sum |dq|^2 >= |q_k - q_{k-1}|^2 / T (Cauchy-Schwarz), q_{-1} the start;
@@ -13,16 +14,18 @@ carries or pushes) the trajectory problem without collisions is a convex QP:
 - a place: the centre = q + v inside its region, the footprint's axis-aligned
   half extents inward (the yaw is the start's: nothing turns it); on a body,
   the centre over the body's top face;
-- a push: the object moves with the disk, its offset behind one face of a box
-  (each assignment of faces is a QP of its own; the bound is their minimum),
-  the displacement within that face's friction cone; a disk's push keeps its
-  offset on a circle (relaxed as a grasp's) and drops the cone;
+- a push: the object moves with the disk (up to validate's RIGID drift), its
+  offset behind one face of a box (each assignment of faces is a QP of its
+  own; the bound is their minimum), the displacement within that face's
+  friction cone; a disk's push keeps its offset on a circle (relaxed as a
+  grasp's) and drops the cone;
 - joint limits on every keyframe;
 - a box put down apart from every upright box resting beside it: a
   disjunction over separating axes, branched on (relaxed_apart.py).
 
-Everything else (collisions in motion, disks and meshes kept apart, stability, a move's target,
-a symbolic action) is dropped, which only lowers the value: it is a lower
+Everything else (collisions in motion, disks and meshes kept apart,
+stability, a move's target, a symbolic action) is dropped, which only
+lowers the value: it is a lower
 bound on the cost of every trajectory `validate` accepts (its tolerances are
 the relaxation's slack), and so, for a prefix, on every completion (what is
 added costs >= 0). Each QP is solved with a certificate (convex_qp), so the
