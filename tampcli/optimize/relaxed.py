@@ -148,6 +148,10 @@ class Builder:
         for step in problem.steps:
             step.kind.relax(self, step)
 
+    def forget(self, step) -> None:
+        """The step moves its object where the relaxation does not follow."""
+        self.pos.pop(step.obj, None)
+
     def var(self, lo, hi) -> int:
         i = len(self.lo)
         self.lo.extend(float(v) for v in lo)

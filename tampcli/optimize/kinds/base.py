@@ -62,9 +62,11 @@ class ModeKind(ABC):
     def phases(self, walk, step) -> None:
         """The step's mode switch in the trajectory's phases (assemble.PhaseWalk)."""
 
-    def relax(self, builder, step) -> None:  # noqa: B027 (optional)
+    def relax(self, builder, step) -> None:
         """The step's rows in the planar robot's convex relaxation (relaxed.Builder:
-        its linear ones); none by default, which only lowers the bound."""
+        its linear ones). By default none, which only lowers the bound, and where
+        the step's object ends up is unknown from here on."""
+        builder.forget(step)
 
     def relax_faces(self, problem, step) -> tuple[float, ...]:
         """The discrete choices (faces) the relaxation takes one QP each; none by default."""
