@@ -84,7 +84,7 @@ class PrefixBounds:
             label = "proved" if node.proved else "heuristic"
             if math.isinf(node.value):
                 why = f": {node.why}" if node.why else ""
-                return node, Prune(node, f"the collision-free relaxation of {where} is "
+                return node, Prune(node, f"the relaxed trajectory problem of {where} is "
                                          f"infeasible ({label}){why}")
             total = node.value + weight * least
             if incumbent is not None and total >= incumbent - tie:
