@@ -233,8 +233,7 @@ class _Search:
         return True
 
     def _pruned_by_bound(self, trial: _Trial) -> bool:
-        """Raise the trial's proved bound by its relaxed one; prune it (and forbid the
-        prefix) when a prefix node cannot beat the incumbent (prefix_bounds.py)."""
+        """Raise the trial's proved bound by its relaxed one; prune it (prefix_bounds.py)."""
         if self.bounds is None:
             return False
         t0, incumbent = self.clock(), getattr(self.incumbent, "objective", None)
@@ -245,14 +244,15 @@ class _Search:
             trial.proved_bound = self.w * trial.symbolic + node.value
         if prune is None or (self.options.anytime and not prune.node.proved):
             return False
-        if not prune.node.proved:  # this skeleton alone: the bound may be wrong
+        if not prune.node.proved:  # this skeleton alone, and it stays open in the bound
             self._unproved(trial)
             self.all_proved_infeasible = False
         elif prune.node.prefix != trial.names and hasattr(self.skeletons, "forbid_prefix"):
             self.skeletons.forbid_prefix(prune.node.prefix)
             self.stats["prefixes_forbidden"] += 1
         outcome = "infeasible" if prune.infeasible else "pruned"
-        self.stats["skeletons_infeasible" if prune.infeasible else "skeletons_pruned"] += 1
+        self.stats[f"skeletons_{outcome}"] += 1
+        self.learn(prune)  # a body in the way (its worst_constraint), like a failed stage's
         self.records.append(SkeletonRecord(
             trial.rank, trial.names, trial.symbolic, outcome, trial.proved_bound,
             "proved" if prune.node.proved else "heuristic", None, None, None,

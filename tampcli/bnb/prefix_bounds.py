@@ -46,6 +46,11 @@ class Prune:
     def infeasible(self) -> bool:
         return math.isinf(self.node.value)
 
+    @property
+    def worst_constraint(self) -> str | None:
+        """What makes the relaxation infeasible, as a failed stage says it (for `learn`)."""
+        return self.node.why if self.infeasible else None
+
 
 class PrefixBounds:
     """Bounds of prefix nodes, each relaxation solved once (skeletons share prefixes)."""

@@ -40,6 +40,7 @@ class Apart:
     c: int
     other: int | np.ndarray
     options: tuple[tuple[np.ndarray, float], ...]
+    label: str = ""  # "(place t pen): overlaps b": what a blocked placement says
 
     def row(self, option: int, n: int) -> tuple[np.ndarray, float]:
         """The option as a row a'x <= b of an n-variable QP."""
@@ -50,6 +51,19 @@ class Apart:
             return a, -float(u @ self.other) - w
         a[self.other:self.other + 2] += u
         return a, -w
+
+    def reach(self, boxes) -> list[tuple[float, float]]:
+        """(least, most) of u.(c - other) over the variables' boxes, per option;
+        `boxes(i)` is variable i's (lo, hi)."""
+        clo, chi = boxes(self.c)
+        olo, ohi = (self.other, self.other) if isinstance(self.other, np.ndarray) \
+            else boxes(self.other)
+        out = []
+        for u, _ in self.options:
+            low = np.sum(np.minimum(u * clo, u * chi)) - np.sum(np.maximum(u * olo, u * ohi))
+            high = np.sum(np.maximum(u * clo, u * chi)) - np.sum(np.minimum(u * olo, u * ohi))
+            out.append((float(low), float(high)))
+        return out
 
     def overlaps(self, x: np.ndarray) -> bool:
         c = x[self.c:self.c + 2]
@@ -66,8 +80,11 @@ def footprint(problem, name: str) -> tuple[np.ndarray, np.ndarray] | None:
     return np.array([[c, -s], [s, c]]), np.array(info.half[:2])
 
 
-def apart(problem, obj: str, c: int, other: str, at: int | np.ndarray) -> Apart | None:
-    """The options that keep box `obj` at variable c apart from box `other` at `at`."""
+def apart(problem, step, c: int, other: str, at: int | np.ndarray, boxes) -> Apart | None:
+    """The options that keep the step's box at variable c apart from box `other` at
+    `at`; None when nothing is to branch on: another shape, another height, or
+    apart anyway wherever the variables' boxes (`boxes(i)`: lo, hi) let them be."""
+    obj = step.obj
     a, b = footprint(problem, obj), footprint(problem, other)
     ia, ib = problem.bodies[obj], problem.bodies[other]
     overlap = min(ia.top, ib.top) - max(ia.bottom, ib.bottom)
@@ -81,17 +98,30 @@ def apart(problem, obj: str, c: int, other: str, at: int | np.ndarray) -> Apart 
                 continue  # boxes at the same yaw share their axes
             w = float(np.abs(a[0].T @ u) @ a[1] + np.abs(b[0].T @ u) @ b[1]) - SLACK
             options += [(u, w), (-u, w)]
-    return Apart(c, at, tuple(options))
+    pair = Apart(c, at, tuple(options), f"{step.name}: overlaps {other}")
+    if any(low >= w for (low, _), (_, w) in zip(pair.reach(boxes), options, strict=True)):
+        return None
+    return pair
 
 
-def solve_apart(qp: ConvexQP, pairs: list[Apart], budget: int) -> tuple[QPBound, int]:
+def blocks_alone(pair: Apart, boxes) -> bool:
+    """No option of the pair fits the variables' boxes: the other body alone leaves
+    no room (a body standing in the target region, say)."""
+    return all(high < w for (_, high), (_, w) in zip(pair.reach(boxes), pair.options,
+                                                       strict=True))
+
+
+def solve_apart(qp: ConvexQP, pairs: list[Apart],
+                budget: int) -> tuple[QPBound, int, Apart | None]:
     """The least proved bound of the QP with every pair apart, from at most `budget`
-    QPs; (the bound, QPs solved). Best node first: the node popped is the least
-    open one, so its bound holds for them all."""
+    QPs; (the bound, QPs solved, the pair the relaxation without them overlaps).
+    Best node first: the node popped is the least open one, so its bound holds
+    for them all."""
     root = solve_convex_qp(qp)
     solved, count = 1, 0
+    first = next((p for p in pairs if root.x is not None and p.overlaps(root.x)), None)
     if not pairs or math.isinf(root.value) or not root.proved:
-        return root, solved
+        return root, solved, first
     heap = [(root.value, count, (), root)]
     n = len(qp.c)
     while heap:
@@ -100,7 +130,7 @@ def solve_apart(qp: ConvexQP, pairs: list[Apart], budget: int) -> tuple[QPBound,
         split = next((i for i, p in enumerate(pairs)
                       if i not in done and node.x is not None and p.overlaps(node.x)), None)
         if split is None or solved + len(pairs[split].options) > budget:
-            return node, solved
+            return node, solved, first
         for option in range(len(pairs[split].options)):
             rows = [*chosen, (split, option)]
             extra = [pairs[i].row(o, n) for i, o in rows]
@@ -109,8 +139,8 @@ def solve_apart(qp: ConvexQP, pairs: list[Apart], budget: int) -> tuple[QPBound,
                 np.concatenate([qp.b, [b for _, b in extra]]), qp.E, qp.f, qp.lo, qp.hi))
             solved += 1
             if not child.proved:
-                return node, solved  # cannot happen for a convex QP: stop at a proved bound
+                return node, solved, first  # not for a convex QP: stop at a proved bound
             if not math.isinf(child.value):
                 count += 1
                 heapq.heappush(heap, (child.value, count, tuple(rows), child))
-    return QPBound(math.inf, True, None, None), solved
+    return QPBound(math.inf, True, None, None), solved, first
