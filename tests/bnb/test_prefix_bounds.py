@@ -15,6 +15,7 @@ from .test_bnb import R, Source, table_evaluator
 class Bound:
     value: float
     kind: str = "proved"
+    why: str | None = None
 
 
 def relax_table(table, calls=None):
@@ -114,3 +115,15 @@ def test_no_relaxation_keeps_the_symbolic_bound():
                            relax=lambda ops: None)
     assert res.lower_bound == pytest.approx(0.1)
     assert not any("relax" in (s.reason or "") for s in res.skeletons)
+
+
+def test_what_blocks_a_relaxation_reaches_the_learner():
+    src = Source([(("p",), 1), (("q", "p"), 2)])
+    heard = []
+    why = "(p): overlaps b wherever it is put down"
+    res = branch_and_bound(src, table_evaluator({}), BnBOptions(symbolic_weight=0.1),
+                           relax=relax_table({("p",): Bound(math.inf, why=why)}),
+                           learn=lambda found: heard.append(found.worst_constraint))
+    assert heard == [why]
+    assert why in res.skeletons[0].reason
+    assert [op.name for op in res.best_plan] == ["q", "p"]
