@@ -266,7 +266,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
     bnb_start = time.perf_counter()
     result = branch_and_bound(_TimedSkeletons(source, timers), evaluate, options.bnb,
                               is_geometric=lambda op: modes.get_mode(op.action).geometric,
-                              on_event=on_event, learn=learn)
+                              on_event=on_event, learn=learn, relax=evaluate.relaxed)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
     result = eliminate_useless(result, evaluate,
                                lambda ops, i: without_step(inputs.task, ops, i),
@@ -286,23 +286,31 @@ class _Evaluator:
     def __init__(self, inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
                  deadline: float):
         from tampcli.optimize.problem import lower
+        from tampcli.optimize.relaxed import relaxed_bound
         from tampcli.optimize.solve import solve as solve_stage
 
         self.inputs, self.geometry, self.deadline = inputs, geometry, deadline
         self.options = options.optimize
-        self.lower, self.solve_stage = lower, solve_stage
+        self.lower, self.solve_stage, self.relaxed_bound = lower, solve_stage, relaxed_bound
         self.lowered: dict[tuple[str, ...], object] = {}
 
-    def __call__(self, ops, stage, warm):
+    def _lowered(self, ops):
         names = tuple(op.name for op in ops)
         if names not in self.lowered:
             self.lowered[names] = self.lower(
                 ops, self.inputs.scene, self.inputs.modes, self.geometry.world, self.options,
                 domain=self.inputs.domain, checker=self.geometry.checker)
+        return self.lowered[names]
+
+    def __call__(self, ops, stage, warm):
         remaining = max(self.deadline - time.perf_counter(), 0.5)
         options = self.options if remaining >= self.options.time_limit else \
             dataclasses.replace(self.options, time_limit=remaining)
-        return self.solve_stage(self.lowered[names], stage, warm=warm, options=options)
+        return self.solve_stage(self._lowered(ops), stage, warm=warm, options=options)
+
+    def relaxed(self, ops):
+        """The prefix's relaxed bound (optimize/relaxed.py), None off the planar robot."""
+        return self.relaxed_bound(self._lowered(ops))
 
 
 def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result: BnBResult,

@@ -5,7 +5,9 @@ cost. Each is evaluated cheap to expensive — final placements, keyframes,
 full path — and dropped at the first stage that fails. Geometry reaches this
 module only as a plain callable `evaluate(skeleton, stage, warm)`, so the
 search can be tested with toy functions. `prefix_tree.py` keeps the keyframe
-results by prefix (memo, warm starts, infeasible prefixes).
+results by prefix (memo, warm starts, infeasible prefixes); `prefix_bounds.py`
+the bounds of prefix nodes, from `relax(ops)` (a relaxation of the prefix's
+trajectory problem, e.g. optimize/relaxed.py's convex QP).
 
 Objective of a solution: trajectory cost + w * symbolic cost.
 
@@ -16,6 +18,10 @@ Bounds, honestly labelled:
   source's own `lower_bound()` for one that reorders skeletons by what it
   learned); when that reaches the incumbent, the incumbent is optimal and we
   stop.
+  A prefix node whose relaxed trajectory bound (solved to global optimality)
+  plus w * the least symbolic cost of a completion reaches the incumbent, or
+  whose relaxation is infeasible, prunes every skeleton starting with it;
+  each skeleton's proved bound is w * its symbolic cost + its relaxed bound.
   An infeasibility is proved only when the evaluator says so (`proved`,
   e.g. a region out of reach by a distance argument).
 - heuristic: the keyframe NLP's optimum (a lower bound of the path cost for
@@ -33,6 +39,8 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
+from tampcli.bnb.outcome import TIE, explain, heuristic_prunes, stop_label
+from tampcli.bnb.prefix_bounds import PrefixBounds, Relax
 from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
 from tampcli.bnb.values import (
     BnBOptions,
@@ -49,7 +57,6 @@ __all__ = ["BnBOptions", "BnBResult", "Evaluate", "Event", "SkeletonSource", "St
            "branch_and_bound"]
 
 STAGES = ("final", "keyframes", "path")
-TIE = 1e-12  # objectives this close count as equal when the symbolic bound is compared
 
 
 def branch_and_bound(
@@ -60,6 +67,7 @@ def branch_and_bound(
     on_event: Callable[[Event], None] | None = None,
     clock: Callable[[], float] = time.perf_counter,
     learn: Callable[[Any], None] | None = None,
+    relax: Relax | None = None,
 ) -> BnBResult:
     """Search skeletons best-first with staged NLP bounds; see the module docstring.
 
@@ -67,10 +75,11 @@ def branch_and_bound(
     `is_geometric(op)` tells which actions end a keyframe (prefixes worth testing).
     `evaluate(ops, stage, warm)` solves one stage; `warm` is the result of an earlier
     stage (or of a prefix's keyframes), passed through untouched. `learn(result)`
-    hears of every stage that failed (what geometry found in the way).
+    hears of every stage that failed (what geometry found in the way). `relax(ops)`
+    bounds the trajectory cost of every completion of a prefix (prefix_bounds.py).
     """
     search = _Search(skeletons, evaluate, options or BnBOptions(), is_geometric, on_event,
-                     clock, learn)
+                     clock, learn, relax)
     return search.run()
 
 
@@ -80,6 +89,7 @@ class _Incumbent:
     result: Any  # the path-stage result
     plan: tuple[Any, ...]
     symbolic: float
+    bound: float  # proved: its skeleton has no trajectory cheaper (its NLP optimum is local)
 
 
 @dataclass
@@ -104,8 +114,10 @@ class _Trial:
 class _Search:
     """The state of one branch and bound: incumbent, records, statistics."""
 
-    def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock, learn):
+    def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock, learn,
+                 relax):
         self.skeletons, self.evaluate, self.options = skeletons, evaluate, options
+        self.bounds = None if relax is None else PrefixBounds(relax, is_geometric)
         self.learn = learn or (lambda result: None)
         self.is_geometric, self.clock = is_geometric, clock
         self.emit = on_event or (lambda event: None)
@@ -116,13 +128,14 @@ class _Search:
         self.records: list[SkeletonRecord] = []
         self.stats = {"skeletons_generated": 0, "skeletons_optimized": 0,
                       "skeletons_pruned": 0, "skeletons_infeasible": 0, "nlp_solves": 0,
-                      "nlp_iterations": 0, "prefixes_forbidden": 0, "optimize_seconds": 0.0}
+                      "nlp_iterations": 0, "prefixes_forbidden": 0, "optimize_seconds": 0.0,
+                      "relaxed_bound_seconds": 0.0}
         self.incumbent: _Incumbent | None = None
         self.improvements: list[tuple[float, float]] = []
         self.failures: list[tuple[int, tuple[str, ...], str, str]] = []  # rank, plan, stage, why
         self.deepest_feasible: tuple[str, ...] = ()
         self.all_proved_infeasible = True
-        # Proved bounds (w * symbolic cost) of drawn skeletons that no proof excludes:
+        # Proved bounds (w * symbolic cost + relaxed bound) of drawn skeletons no proof excludes:
         # solved ones that lost (their NLP optimum is local), infeasible ones whose
         # failure is not proved, heuristic prunes. Each may hide a better solution.
         self.unproved: list[float] = []
@@ -194,6 +207,8 @@ class _Search:
         moved past the last motion) has the same trajectory NLP, and a symbolic
         cost no lower (skeletons arrive in non-decreasing cost): it cannot win.
         """
+        if self._pruned_by_bound(trial):
+            return True
         motion = tuple(n for op, n in zip(trial.ops, trial.names, strict=True)
                        if self.is_geometric(op))
         twin = self.evaluated.get(motion)
@@ -217,6 +232,35 @@ class _Search:
                                            None, 0.0, why))
         self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, outcome="pruned",
                         message=why))
+        return True
+
+    def _pruned_by_bound(self, trial: _Trial) -> bool:
+        """Raise the trial's proved bound by its relaxed one; prune it (prefix_bounds.py)."""
+        if self.bounds is None:
+            return False
+        t0, incumbent = self.clock(), getattr(self.incumbent, "objective", None)
+        node, prune = self.bounds.judge(trial.ops, trial.names, trial.symbolic,
+                                        self._undrawn_bound(trial), self.w, incumbent, TIE)
+        self.stats["relaxed_bound_seconds"] += self.clock() - t0
+        if node is not None and node.proved:
+            trial.proved_bound = self.w * trial.symbolic + node.value
+        if prune is None or (self.options.anytime and not prune.node.proved):
+            return False
+        if not prune.node.proved:  # this skeleton alone, and it stays open in the bound
+            self._unproved(trial)
+            self.all_proved_infeasible = False
+        elif prune.node.prefix != trial.names and hasattr(self.skeletons, "forbid_prefix"):
+            self.skeletons.forbid_prefix(prune.node.prefix)
+            self.stats["prefixes_forbidden"] += 1
+        outcome = "infeasible" if prune.infeasible else "pruned"
+        self.stats[f"skeletons_{outcome}"] += 1
+        self.learn(prune)  # a body in the way (its worst_constraint), like a failed stage's
+        self.records.append(SkeletonRecord(
+            trial.rank, trial.names, trial.symbolic, outcome, trial.proved_bound,
+            "proved" if prune.node.proved else "heuristic", None, None, None,
+            self.clock() - trial.started, prune.reason))
+        self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, "relaxation",
+                        outcome, bound=trial.proved_bound, message=prune.reason))
         return True
 
     def _unproved(self, trial: _Trial) -> None:
@@ -294,8 +338,9 @@ class _Search:
                 self._unproved(trial)
             else:
                 if self.incumbent is not None:
-                    self.unproved.append(self.w * self.incumbent.symbolic)
-                self.incumbent = _Incumbent(total, trial.path_result, trial.ops, trial.symbolic)
+                    self.unproved.append(self.incumbent.bound)
+                self.incumbent = _Incumbent(total, trial.path_result, trial.ops, trial.symbolic,
+                                            trial.proved_bound)
                 self.improvements.append((self.elapsed(), total))
                 self.emit(Event("incumbent", trial.rank, trial.names, trial.symbolic,
                                 cost=trial.nlp_cost, bound=total, seconds=self.elapsed()))
@@ -315,12 +360,11 @@ class _Search:
                         seconds=self.elapsed(), message=trial.reason))
 
     def _proved_bound(self, stop: str) -> float | None:
-        """No solution has a lower objective: a trajectory cost is >= 0, so each
-        skeleton's objective is >= w * its symbolic cost; the minimum of that over
-        the incumbent, the skeletons no proof excluded, and those not drawn."""
+        """No solution has a lower objective: the least proved bound (w * symbolic cost
+        + relaxed bound) of the incumbent, the skeletons no proof excluded, those not drawn."""
         candidates = list(self.unproved)
         if self.incumbent is not None:
-            candidates.append(self.w * self.incumbent.symbolic)
+            candidates.append(self.incumbent.bound)
         if stop != "exhausted" and self.records:
             bound = getattr(self.skeletons, "lower_bound", None)
             undrawn = bound() if bound is not None else self.records[-1].symbolic_cost
@@ -330,21 +374,11 @@ class _Search:
         low = min(candidates)
         return low if self.incumbent is None else min(low, self.incumbent.objective)
 
-    def _stop_label(self, stop: str, proved_lb: float | None) -> str:
-        if stop != "optimal":
-            return {"time": "time limit", "skeletons": "skeleton limit",
-                    "exhausted": "every skeleton tried", "first": "first solution"}[stop]
-        if proved_lb is not None and proved_lb >= self.incumbent.objective - TIE:
-            return "optimal (proved)"
-        prunes = sum(b < self.incumbent.objective - TIE for b in self.unproved)
-        return f"best of the evaluated skeletons ({prunes} heuristic prunes)"
-
     def _result(self, stop: str) -> BnBResult:
         proved_lb = self._proved_bound(stop)
-        self.stats["stop"] = self._stop_label(stop, proved_lb)
-        self.stats["heuristic_prunes"] = (
-            sum(b < self.incumbent.objective - TIE for b in self.unproved)
-            if self.incumbent is not None else len(self.unproved))
+        objective = None if self.incumbent is None else self.incumbent.objective
+        self.stats["stop"] = stop_label(stop, objective, proved_lb, self.unproved)
+        self.stats["heuristic_prunes"] = heuristic_prunes(objective, self.unproved)
         self.stats["seconds"] = self.elapsed()
         # When the first solution came: what a user waits for before `--anytime` or the
         # search for a better skeleton goes on.
@@ -362,24 +396,7 @@ class _Search:
         status = "limit"
         if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):
             status = "unsolvable"
-        reason = _explain(stop, self.rank, self.failures, self.deepest_feasible, self.options)
+        reason = explain(stop, self.rank, self.failures, self.deepest_feasible, self.options)
         return BnBResult(status, reason, None, (), None, None, proved_lb, False, self.records,
                          self.stats, self.improvements)
 
-
-def _explain(stop_reason, tried, failures, deepest_feasible, options) -> str:
-    if tried == 0:
-        return "no skeleton: the task is symbolically unsolvable"
-    parts = []
-    limits = {"time": f"time limit ({options.time_limit:g} s) reached",
-              "skeletons": f"skeleton limit ({options.max_skeletons}) reached",
-              "exhausted": "every skeleton was tried"}
-    parts.append(f"{limits.get(stop_reason, stop_reason)} after {tried} skeleton(s), "
-                 "none geometrically feasible")
-    if deepest_feasible:
-        parts.append(f"deepest feasible keyframe sequence: {' '.join(deepest_feasible)}")
-    for rank, plan, _stage, why in failures[:3]:
-        parts.append(f"#{rank} {' '.join(plan)}: {why}")
-    if len(failures) > 3:
-        parts.append(f"... and {len(failures) - 3} more")
-    return "; ".join(parts)

@@ -16,5 +16,10 @@ blocks), constraints (placement, grasp, reach rows), collide (collision
 rows), stages (final / keyframe NLPs), path (per-phase path NLPs, via
 points), init (IK keyframes), nlp (the SLSQP driver), backends (the path
 stage's solvers: SLSQP, Ipopt in ipopt_backend), assemble (trajectory,
-phases, object poses), verify, result.
+phases, object poses), verify, result; run (a stage solve's bookkeeping),
+keyframe_stage and path_stage (the stages), relocate (objects moved out of a
+later motion's way); relaxed (the planar skeleton's convex QP without
+collisions in motion: a proved lower bound of its cost) on convex_qp (a QP
+solved with a duality certificate) and relaxed_apart (boxes put down apart:
+a disjunction branched on).
 """

@@ -62,6 +62,16 @@ class ModeKind(ABC):
     def phases(self, walk, step) -> None:
         """The step's mode switch in the trajectory's phases (assemble.PhaseWalk)."""
 
+    def relax(self, builder, step) -> None:
+        """The step's rows in the planar robot's convex relaxation (relaxed.Builder:
+        its linear ones). By default none, which only lowers the bound, and where
+        the step's object ends up is unknown from here on."""
+        builder.forget(step)
+
+    def relax_faces(self, problem, step) -> tuple[float, ...]:
+        """The discrete choices (faces) the relaxation takes one QP each; none by default."""
+        return ()
+
     def path_rows(self, rows, label, problem, qs, held, kin) -> None:  # noqa: B027 (optional)
         """Rows the kind adds to the path NLP of its own motion (`MotionPhase.own`)
         through configurations qs; none by default."""

@@ -124,6 +124,9 @@ class Grasp(ModeKind):
     def reseed(self, walk, step, k):
         pass
 
+    def relax(self, builder, step):
+        builder.grasp(step)
+
     def keyframe_rows(self, walk, step):
         (k,) = step.keyframes
         frame, _, t, t_block, H = walk.gripped(k, step.index)

@@ -56,6 +56,9 @@ class Place(ModeKind):
     def grip(self, problem, step, choice):
         raise ValueError(f"{step.name}: a place holds by the grip of its grasp")
 
+    def relax(self, builder, step):
+        builder.place(step)
+
     def final_rows(self, walk, step):
         walk.place(step)
 

@@ -27,6 +27,7 @@ from tampcli.optimize.grips import held_pose
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.kinds.push_check import check_push, clearance
 from tampcli.optimize.kinds.push_contact import (
+    BOX_FACES,
     CONTACT_GAP,
     PUSH_FRICTION,
     arm_face_grip,
@@ -181,6 +182,13 @@ class Push(ModeKind):
 
     def reseed(self, walk, step, k):
         pass
+
+    def relax(self, builder, step):
+        builder.push(step)
+
+    def relax_faces(self, problem, step):
+        # A disk has a face in every direction: its pushes are relaxed without a cone.
+        return () if problem.bodies[step.obj].disk else BOX_FACES
 
     def keyframe_rows(self, walk, step):
         k0, k1 = step.keyframes
