@@ -1,13 +1,12 @@
 """Branch and bound over ranked skeletons (the seed's §5).
 
 Skeletons arrive lazily from the top-k generator in non-decreasing symbolic
-cost. Each is evaluated cheap to expensive — final placements, keyframes,
-full path — and dropped at the first stage that fails. Geometry reaches this
-module only as a plain callable `evaluate(skeleton, stage, warm)`, so the
-search can be tested with toy functions. `prefix_tree.py` keeps the keyframe
-results by prefix (memo, warm starts, infeasible prefixes); `prefix_bounds.py`
-the bounds of prefix nodes, from `relax(ops)` (a relaxation of the prefix's
-trajectory problem, e.g. optimize/relaxed.py's convex QP).
+cost; each is evaluated cheap to expensive (final placements, keyframes, full
+path) and dropped at the first stage that fails. Geometry comes in only as a
+callable `evaluate(skeleton, stage, warm)` (toy functions in the tests).
+`prefix_tree.py` keeps keyframe results by prefix (memo, warm starts,
+infeasible prefixes); `prefix_bounds.py` bounds prefix nodes with `relax(ops)`
+(e.g. optimize/relaxed.py's convex QP).
 
 Objective of a solution: trajectory cost + w * symbolic cost.
 
