@@ -41,14 +41,7 @@ from typing import Any
 from tampcli.bnb.outcome import TIE, explain, heuristic_prunes, stop_label
 from tampcli.bnb.prefix_bounds import PrefixBounds, Relax
 from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
-from tampcli.bnb.values import (
-    BnBOptions,
-    BnBResult,
-    Evaluate,
-    Event,
-    SkeletonSource,
-    StageResult,
-)
+from tampcli.bnb.values import BnBOptions, BnBResult, Evaluate, Event, SkeletonSource, StageResult
 from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
 
