@@ -22,8 +22,10 @@ Actions that serve nothing are not worth an NLP: a skeleton made of a
 solved one plus more actions ("superseded": it can only cost more), or of
 an evaluated one that already meets everything learned plus more actions
 ("redundant": the extras are symbolically useless given what is known), is
-deferred until every other skeleton has been drawn. Deferred is not lost:
-the bound counts them as not drawn.
+deferred until every other skeleton has been drawn, unless its extra actions
+move a body the shorter one leaves alone (that may clear what geometry found
+in the way without naming it). Deferred is not lost: the bound counts them as
+not drawn.
 """
 
 from __future__ import annotations
@@ -196,9 +198,22 @@ class LearningSource:
             return "superseded"
         for other in self._evaluated:
             if len(other) < len(names) and _is_subsequence(other, names) \
-                    and self._meets_learned(other):
+                    and self._meets_learned(other) and self._moves_nothing_new(other, names):
                 return "redundant"
         return None
+
+    def _moves_nothing_new(self, other: tuple[str, ...], names: tuple[str, ...]) -> bool:
+        """Do the actions `names` adds to `other` (a subsequence of it) before `other`'s
+        last action move only bodies `other` moves too? Moving another body first can
+        clear what made `other` fail even where nothing was learned of it (a pen of
+        four blockers: the final NLP's worst row named a neighbour, not the third and
+        fourth blocker), so that is never redundant; what comes after is."""
+        moved = set().union(*(self._moves(self._by_name[n]) for n in other))
+        at, last = 0, 0
+        for i, name in enumerate(names):
+            if at < len(other) and name == other[at]:
+                at, last = at + 1, i
+        return all(self._moves(self._by_name[n]) <= moved for n in names[:last])
 
     def _meets_learned(self, names: tuple[str, ...]) -> bool:
         """The plan is valid in the compiled task: it moves every known blocker first."""

@@ -152,3 +152,23 @@ def test_forbidden_prefixes_stay_forbidden_after_a_restart():
 def _contains(long, short):
     it = iter(long)
     return all(any(x == y for y in it) for x in short)
+
+
+def test_a_copy_that_also_moves_a_body_left_alone_is_not_deferred():
+    # Geometry named only b1 (its worst row), so the skeleton clearing b1 meets every
+    # finding and fails: the one that clears b2 as well is what the pen needs, and
+    # comes before the padded copies that only move b1 or a again.
+    task, _ = pen(2)
+    src = source(task)
+    assert next(src).names == ("(pick a floor)", "(place a goal)")
+    src.learn(Blocker("b1", "(place a goal)"))
+    clearing = next(src)
+    assert clearing.names[0] == "(pick b1 goal)" and len(clearing.names) == 4
+    later = [p.names for p in src]
+    both = [i for i, n in enumerate(later)
+            if _contains(n, clearing.names) and any("b2" in a for a in n[:-2])]
+    padded = [i for i, n in enumerate(later)
+              if len(n) > 4 and _contains(n, clearing.names)
+              and not any("b2" in a for a in n[:-2])]
+    assert both and padded and min(both) < min(padded)
+    assert len(later[min(both)]) == 6 and min(both) < 3  # right after the clearing one
