@@ -40,7 +40,8 @@ class Shape:
     margin: float = 0.0  # m: the solid is this shape grown by a ball of this radius
 
     def support(self, direction_local: np.ndarray) -> float:
-        """max over the solid of direction . x, in the shape's own frame."""
+        """max over the core (the solid less its margin) of direction . x, in the
+        shape's own frame."""
         u = direction_local
         if self.kind == "box":
             return 0.5 * float(np.abs(u) @ np.asarray(self.size))
@@ -55,7 +56,7 @@ class Shape:
         return float(np.max(self.vertices @ u))
 
     def support_point(self, direction_local: np.ndarray) -> np.ndarray:
-        """A point of the solid maximizing direction . x (own frame)."""
+        """A point of the core maximizing direction . x (own frame)."""
         u = direction_local
         if self.kind == "box":
             return 0.5 * np.sign(u) * np.asarray(self.size)
