@@ -93,8 +93,8 @@ def main() -> None:
         "| --- | ---: | ---: | --- | --- | ---: | ---: | ---: |",
         *rows,
         "",
-        "An invalid row is a plan that physics refuses; the expected ones are listed in "
-        "tests/render/test_physics_validate.py (`KNOCKED`, with why).",
+        "An invalid row is a plan that physics refuses; "
+        "tests/render/test_physics_validate.py expects none.",
         "",
     ]
     OUT.write_text("\n".join(lines))

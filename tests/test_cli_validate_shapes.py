@@ -139,7 +139,10 @@ def test_a_retreat_is_checked_for_collisions(arm, validate):
 
 
 def opening(i: int) -> float:
-    return 0.025 if 10 <= i < 20 else 0.04  # closed on the 5 cm cube while carrying
+    # Closed on the 5 cm cube while carrying; open at waypoint 10, which ends the
+    # motion down to the cube too (the fingers close after it: closed there, they
+    # would touch the cube before it is held).
+    return 0.025 if 10 < i < 20 else 0.04
 
 
 def test_finger_columns(arm, validate):
@@ -153,6 +156,16 @@ def test_finger_columns_beyond_the_fingers_travel(arm, validate):
     _, run = validate(add_fingers(data, lambda i: 0.05 if i == 3 else opening(i)))
     assert run.code == 1
     assert "waypoint 3: finger joint panda_finger_joint1 = 0.0500 outside [0, 0.04]" in run.out
+
+
+def test_finger_columns_are_where_the_collision_check_puts_the_fingers(arm, validate):
+    """Closed on nothing on the way down to a (the fingers meet where the 5 cm cube
+    will be), they go into it at the grasp: open, the same trajectory is valid."""
+    data, _ = arm
+    _, run = validate(add_fingers(data, lambda i: 0.0 if i <= 10 else opening(i)))
+    assert run.code == 1
+    assert "motion before (pick a start): collision panda_" in run.out
+    assert "finger vs a" in run.out
 
 
 def test_an_unknown_joint_is_bad_input(arm, validate):

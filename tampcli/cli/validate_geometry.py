@@ -17,7 +17,7 @@ indices unchanged where possible:
 What the verifier cannot see, because the merging drops it, is checked here:
 at each phase boundary inside a merged motion, objects rest where they were
 and the held one keeps its grasp. Finger columns are checked against the
-fingers' travel.
+fingers' travel, and the collision check puts the fingers where they say.
 """
 
 from __future__ import annotations
@@ -81,7 +81,9 @@ def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path
         if spans and spans[-1].action is None:
             problem = _with_retreat(problem, spans[-1], checked, world)
         result, stationary = _result(checked, spans)
-        found = [_to_file_waypoints(m, stationary) for m in verify.verify(problem, result)]
+        fingers = _fingers(checked, stationary)
+        found = [_to_file_waypoints(m, stationary)
+                 for m in verify.verify(problem, result, fingers=fingers)]
         found += _inside_merged(checked, spans, world)
         found += _finger_travel(checked, world)
     return found
@@ -158,6 +160,17 @@ def _result(checked: SolutionFile, spans: list[_Span]):
     return TrajectoryResult("solved", "path", tuple(s.action for s in spans if s.action),
                             trajectory=np.array(rows, dtype=float), phases=tuple(phases),
                             object_poses=poses), stationary
+
+
+def _fingers(checked: SolutionFile, stationary: list[int]):
+    """The file's finger columns (None: none given) on `_result`'s waypoints: a
+    stationary motion's copied waypoint keeps its fingers."""
+    if checked.fingers is None:
+        return None
+    rows = list(checked.fingers)
+    for at in stationary:  # ascending, each already shifted by the copies before it
+        rows.insert(at, rows[at])
+    return np.array(rows, dtype=float)
 
 
 _WAYPOINT = re.compile(r"waypoint (\d+(?:\.\d+)?)")

@@ -126,6 +126,26 @@ class Chain:
             np.matmul(out[:, parent], local, out=out[:, i])
         return out
 
+    def refixed(self, frames: np.ndarray, values: dict[int, np.ndarray]) -> np.ndarray:
+        """fk_batch frames (S, L, 4, 4) with the joints of the links in `values` (not
+        variables: fingers) at the given values (S,) per row instead of their fixed
+        value; their descendants follow rigidly. Gradients w.r.t. q are unchanged:
+        these joints are not in q."""
+        out = frames.copy()
+        moved = set()
+        for i, parent, *_ in self._plan:
+            if i in values:
+                link = self.links[i]
+                local = np.array([link.origin @ _motion(link.joint_type, link.axis, float(v))
+                                  for v in values[i]])
+            elif parent in moved:
+                local = np.linalg.solve(frames[:, parent], frames[:, i])
+            else:
+                continue
+            out[:, i] = out[:, parent] @ local
+            moved.add(i)
+        return out
+
     def tool_jacobian_batch(self, frames: np.ndarray, link: int) -> np.ndarray:
         """(T, 6, n) [linear; angular] Jacobians of `link`'s origin from fk_batch frames."""
         joint_frames = frames[:, self.joint_link]  # (T, n, 4, 4)

@@ -36,7 +36,16 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.geometry.narrow import Placed, signed_distance
-from tampcli.geometry.pairs import Batch, Boxes, Contact, Query, broad_gaps, local_boxes, screen
+from tampcli.geometry.pairs import (
+    Batch,
+    Boxes,
+    Contact,
+    Query,
+    broad_gaps,
+    local_boxes,
+    masks,
+    screen,
+)
 from tampcli.geometry.parts import (
     Part,
     body_shapes,
@@ -93,6 +102,9 @@ class CollisionChecker:
         self._exact_body = np.array([p.shape.vertices is not None for _, _, p in self._flat],
                                     dtype=bool)
         self._body_local = local_boxes([p for _, _, p in self._flat])
+        # The screens bound the cores; two rounded solids are closer by their margins.
+        every = (*self.link_parts, *(p for _, _, p in self._flat))
+        self._pad = 2.0 * max((p.shape.margin for p in every), default=0.0)
         self._body_start = self._body_boxes(self._start)
         self._static_placed = {
             ("body", name, k): Placed(part.shape, self._start[name] @ part.shape.local)
@@ -136,13 +148,16 @@ class CollisionChecker:
         return self.distances_many(q, body_poses, held, [ignore], activation, static)[0]
 
     def distances_many(self, qs, body_poses=None, held=None, ignores=None,
-                       activation: float = 0.05, static: bool = False) -> list[list[Contact]]:
+                       activation: float = 0.05, static: bool = False,
+                       fingers=None) -> list[list[Contact]]:
         """`distances` for each row of qs (S, n) at once: one list of contacts per row.
 
         `body_poses` and `held` are either one value for all rows (as in
         `distances`) or a list with one value per row (keyframes, each in its
         own state of the world). `ignores`: one set of names per row (or None:
-        nothing ignored).
+        nothing ignored). `fingers`: (S, k) values of the finger joints
+        (World.finger_links' order) per row, where a solution file gives them;
+        None: open, as the optimizer keeps them.
         """
         qs = np.asarray(qs, dtype=float).reshape(-1, self.n)
         n_samples = len(qs)
@@ -151,6 +166,10 @@ class CollisionChecker:
         helds = list(held) if isinstance(held, list) else [held] * n_samples
         chain = self.world.chain
         frames = chain.fk_batch(qs)
+        if fingers is not None:
+            values = np.asarray(fingers, dtype=float).reshape(n_samples, -1)
+            frames = chain.refixed(frames, dict(zip(self.world.finger_links, values.T,
+                                                    strict=True)))
         if per_row:
             poses = [self._body_poses(bp) for bp in body_poses]
             moved = [frozenset(bp or ()) for bp in body_poses]
@@ -163,7 +182,9 @@ class CollisionChecker:
             shared = self._shared_placed(body_poses)
         queries = [Query(chain, frames[s], shared) for s in range(n_samples)]
         batch = Batch(self, queries, frames, activation)
-        usable, columns = self._masks(ignores, [h[0] if h else None for h in helds])
+        reach = activation + self._pad
+        usable, columns = masks(self.link_parts, len(self._flat), self._flat_of, ignores,
+                                [h[0] if h else None for h in helds])
         parts = self.link_parts
         links = Boxes(frames[:, self._link_index], parts, self._link_local)
         link_moves = self._link_index
@@ -179,10 +200,10 @@ class CollisionChecker:
         # Robot links vs bodies.
         near = broad_gaps(links.c[:, :, None], links.aabb[:, :, None], links.s[:, :, None],
                           links.radius[None, :, None], bodies.c[:, None], bodies.aabb[:, None],
-                          bodies.s[:, None], bodies.radius) <= activation
+                          bodies.s[:, None], bodies.radius) <= reach
         near &= self._covered[bool(static)] & usable[:, :, None] & columns[:, None, :]
         s_, i_, j_ = np.nonzero(near)
-        keep = screen(activation, links, (s_, i_), i_, bodies, (body_index(s_), j_), j_)
+        keep = screen(reach, links, (s_, i_), i_, bodies, (body_index(s_), j_), j_)
         s_, i_, j_ = s_[keep], i_[keep], j_[keep]
         batch.narrow(s_, [(i, parts[i], None) for i in i_.tolist()],
                      [body_side(s, j) for s, j in zip(s_.tolist(), j_.tolist(), strict=True)],
@@ -199,10 +220,10 @@ class CollisionChecker:
             ia, ib = self._self_a, self._self_b
             gap = broad_gaps(links.c[:, ia], links.aabb[:, ia], links.s[:, ia], links.radius[ia],
                              links.c[:, ib], links.aabb[:, ib], links.s[:, ib], links.radius[ib])
-            near = (gap <= activation) & usable[:, ia] & usable[:, ib]
+            near = (gap <= reach) & usable[:, ia] & usable[:, ib]
             s_, k_ = np.nonzero(near)
             a_, b_ = ia[k_], ib[k_]
-            keep = screen(activation, links, (s_, a_), a_, links, (s_, b_), b_)
+            keep = screen(reach, links, (s_, a_), a_, links, (s_, b_), b_)
             s_, a_, b_ = s_[keep], a_[keep], b_[keep]
             batch.narrow(s_, [(a, parts[a], None) for a in a_.tolist()],
                          [(b, parts[b], None) for b in b_.tolist()],
@@ -216,7 +237,7 @@ class CollisionChecker:
                     body_side, columns, usable):
         """Object `name` held at rows `rows` (grasps (G, 4, 4)) vs bodies and vs the
         links outside the tool's rigid group."""
-        activation = batch.activation
+        reach = batch.activation + self._pad
         held_poses = frames[rows, self._tool] @ grasps  # (G, 4, 4)
         parts = self._held(name)
         boxes = Boxes(held_poses[:, None], parts)  # (G, H, ...)
@@ -228,8 +249,8 @@ class CollisionChecker:
         gap = broad_gaps(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
                          boxes.radius[None, :, None], b.c[brow][:, None], b.aabb[brow][:, None],
                          b.s[brow][:, None], b.radius)
-        g_, h_, j_ = np.nonzero((gap <= activation) & columns[rows][:, None, :])
-        keep = screen(activation, boxes, (g_, h_), h_, b, (brow[g_], j_), j_)
+        g_, h_, j_ = np.nonzero((gap <= reach) & columns[rows][:, None, :])
+        keep = screen(reach, boxes, (g_, h_), h_, b, (brow[g_], j_), j_)
         g_, h_, j_ = g_[keep], h_[keep], j_[keep]
         s_ = rows[g_]
         batch.narrow(s_, [(("held", h), parts[h], held_poses[g])
@@ -242,8 +263,8 @@ class CollisionChecker:
                          boxes.radius[None, :, None], links.c[rows][:, None],
                          links.aabb[rows][:, None], links.s[rows][:, None], links.radius)
         mask = (usable & ~self._in_tool_group)[rows]
-        g_, h_, j_ = np.nonzero((gap <= activation) & mask[:, None, :])
-        keep = screen(activation, boxes, (g_, h_), h_, links, (rows[g_], j_), j_)
+        g_, h_, j_ = np.nonzero((gap <= reach) & mask[:, None, :])
+        keep = screen(reach, boxes, (g_, h_), h_, links, (rows[g_], j_), j_)
         g_, h_, j_ = g_[keep], h_[keep], j_[keep]
         s_ = rows[g_]
         batch.narrow(s_, [(("held", h), parts[h], held_poses[g])
@@ -252,24 +273,6 @@ class CollisionChecker:
                      (boxes.frames[g_, h_], boxes.points[h_], exact[h_], tool[h_]),
                      (links.frames[s_, j_], links.points[j_], self._exact_link[j_],
                       self._link_index[j_]))
-
-    def _masks(self, ignores, held_names):
-        """(usable (S, link parts), columns (S, body parts)) from the ignored names and
-        the object held at each row."""
-        n_samples = len(ignores)
-        usable = np.ones((n_samples, len(self.link_parts)), dtype=bool)
-        columns = np.ones((n_samples, len(self._flat)), dtype=bool)
-        for s, (ignore, held_name) in enumerate(zip(ignores, held_names, strict=True)):
-            for j in self._flat_of.get(held_name, ()):
-                columns[s, j] = False
-            if not ignore:
-                continue
-            usable[s] = [not _ignored(p, ignore) for p in self.link_parts]
-            for name in ignore:
-                bare = name.partition(":")[2] if name.startswith("body:") else name
-                for j in self._flat_of.get(bare, ()):
-                    columns[s, j] = False
-        return usable, columns
 
     def _contact(self, query, pa: Part, a: Placed, pb_: Part, b: Placed) -> Contact:
         d, p1, p2, n = signed_distance(self._request, a, pa.obj, b, pb_.obj)
@@ -395,6 +398,3 @@ class CollisionChecker:
                     for k, p in enumerate(self.body_parts[bare])]
         raise KeyError(f"unknown name {name!r}: expected link:, held: or body:")
 
-
-def _ignored(part: Part, ignore) -> bool:
-    return part.owner in ignore or part.owner.partition(":")[2] in ignore

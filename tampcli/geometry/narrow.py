@@ -17,6 +17,9 @@ FCL 0.7 answers fast but not always right, so every answer is checked:
   is kept unless it exceeds the bound. FCL's EPA returns nonsense for
   solids that touch face to face (a depth of decimetres towards a far
   corner; resting contacts do exactly that): the bound catches it.
+
+All of this is on the shapes' cores; `rounded` then grows each by its
+margin (shapes.py: PyBullet's rounding of a hull).
 """
 
 from __future__ import annotations
@@ -84,11 +87,25 @@ class Placed:
 
 
 def signed_distance(request, a: Placed, oa, b: Placed, ob):
-    """(distance, point on a, point on b, unit normal from a to b), world frame.
+    """(distance, point on a, point on b, unit normal from a to b), world frame,
+    of the two solids (each shape grown by its margin).
 
     `oa`, `ob` are the FCL objects of the two shapes; they are moved to the
     placed poses here.
     """
+    return rounded(*_core_distance(request, a, oa, b, ob), a.shape.margin, b.shape.margin)
+
+
+def rounded(d, p1, p2, normal, margin_a: float, margin_b: float):
+    """The answer for the cores grown by their margins: distance less both, witness
+    points moved out along the normal (which stays; so do the gradients, since
+    d/dq of n . p is the same for p and p + r n on one link)."""
+    if not margin_a and not margin_b:
+        return d, p1, p2, normal
+    return d - margin_a - margin_b, p1 + margin_a * normal, p2 - margin_b * normal, normal
+
+
+def _core_distance(request, a: Placed, oa, b: Placed, ob):
     if a.shape.kind == "cylinder" or b.shape.kind == "cylinder":
         exact = prism.distance(a, b)
         if exact is not None:

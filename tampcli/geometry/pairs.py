@@ -121,6 +121,27 @@ def screen(activation, a: Boxes, ia: tuple, pa, b: Boxes, ib: tuple, pb_) -> np.
     return keep
 
 
+def masks(link_parts: list[Part], n_body_parts: int, parts_of: dict[str, list[int]],
+          ignores, held_names):
+    """(usable (S, link parts), columns (S, body parts)) from the names ignored and the
+    object held at each row; `parts_of`: body name -> its columns."""
+    n_samples = len(ignores)
+    usable = np.ones((n_samples, len(link_parts)), dtype=bool)
+    columns = np.ones((n_samples, n_body_parts), dtype=bool)
+    for s, (ignore, held_name) in enumerate(zip(ignores, held_names, strict=True)):
+        for j in parts_of.get(held_name, ()):
+            columns[s, j] = False
+        if not ignore:
+            continue
+        usable[s] = [p.owner not in ignore and p.owner.partition(":")[2] not in ignore
+                     for p in link_parts]
+        for name in ignore:
+            bare = name.partition(":")[2] if name.startswith("body:") else name
+            for j in parts_of.get(bare, ()):
+                columns[s, j] = False
+    return usable, columns
+
+
 def broad_gaps(a_c, a_aabb, a_s, a_radius, b_c, b_aabb, b_s, b_radius) -> np.ndarray:
     """Lower bounds (broadcast shape) from world-aligned boxes and spheres: the larger."""
     apart = np.abs(a_c - b_c) - a_aabb - b_aabb
@@ -204,6 +225,11 @@ class Batch:
             quick[quick] = dist[quick] + gap <= TOLERANCE
         for t in np.nonzero(~quick & ~closed)[0].tolist():
             dist[t], p1[t], p2[t], normal[t] = checked(raws[t], *placed[t])
+        margin_a = np.array([side[1].shape.margin for side in sides_a])
+        margin_b = np.array([side[1].shape.margin for side in sides_b])
+        dist -= margin_a + margin_b
+        p1 += margin_a[:, None] * normal
+        p2 -= margin_b[:, None] * normal
         within = dist <= self.activation
         if not within.any():
             return

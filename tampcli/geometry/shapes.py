@@ -2,7 +2,14 @@
 
 Meshes become their convex hull (as PyBullet treats a URDF or GEOM_MESH
 collision mesh), so FCL and PyBullet see the same solids and signed
-distances are defined (GJK/EPA need convex shapes).
+distances are defined (GJK/EPA need convex shapes). PyBullet rounds every
+hull it builds by a collision margin of HULL_MARGIN (its URDF loader's and
+createCollisionShape's default; primitives keep theirs inside): its
+distances are those of the hull grown by a ball of that radius, measured
+1.0 mm shorter per hull (a Panda finger against a box). A hull's `margin`
+says so, and signed distances (narrow.rounded) subtract it: a convex solid
+grown by a ball of radius r is exactly r closer to everything, penetrating
+or not, with the same normal.
 """
 
 from __future__ import annotations
@@ -16,6 +23,8 @@ import numpy as np
 from tampcli.errors import SceneError
 from tampcli.geometry.meshes import read_mesh_parts
 
+HULL_MARGIN = 1e-3  # m: PyBullet's collision margin on a convex hull (btConvexHullShape)
+
 
 @dataclass(frozen=True)
 class Shape:
@@ -28,9 +37,11 @@ class Shape:
     kind: str = "convex"  # box | cylinder | sphere | capsule | convex
     size: tuple[float, ...] = ()  # box extents; (radius, height); (radius,)
     vertices: np.ndarray | None = None  # convex only, in the shape's own frame
+    margin: float = 0.0  # m: the solid is this shape grown by a ball of this radius
 
     def support(self, direction_local: np.ndarray) -> float:
-        """max over the solid of direction . x, in the shape's own frame."""
+        """max over the core (the solid less its margin) of direction . x, in the
+        shape's own frame."""
         u = direction_local
         if self.kind == "box":
             return 0.5 * float(np.abs(u) @ np.asarray(self.size))
@@ -45,7 +56,7 @@ class Shape:
         return float(np.max(self.vertices @ u))
 
     def support_point(self, direction_local: np.ndarray) -> np.ndarray:
-        """A point of the solid maximizing direction . x (own frame)."""
+        """A point of the core maximizing direction . x (own frame)."""
         u = direction_local
         if self.kind == "box":
             return 0.5 * np.sign(u) * np.asarray(self.size)
@@ -98,8 +109,8 @@ def mesh_hulls(path: str, scale=(1.0, 1.0, 1.0), local=None) -> list[Shape]:
         lo, hi = vertices.min(axis=0), vertices.max(axis=0)
         mid = 0.5 * (lo + hi)
         radius = float(np.max(np.linalg.norm(vertices - mid, axis=1)))
-        shapes.append(Shape(geom, local, local[:3, :3] @ mid + local[:3, 3], radius, "convex",
-                            (), vertices))
+        shapes.append(Shape(geom, local, local[:3, :3] @ mid + local[:3, 3],
+                            radius + HULL_MARGIN, "convex", (), vertices, HULL_MARGIN))
     return shapes
 
 

@@ -20,8 +20,8 @@ from tampcli.optimize.expr import Label, PoseX, RowSet
 from tampcli.optimize.grips import Frame, Grip
 
 # m: how much deeper than at its keyframe the optimizer lets a contact being entered
-# or left go at a sample point (verify's limit, PENETRATION, is 1 mm; the independent
-# checker's meshes measure up to ~1 mm deeper than FCL's hulls, found at 0.5 mm here).
+# or left go at a sample point (verify's limit, PENETRATION, is 1 mm; between sample
+# points a contact can go deeper, which verify's 10x check catches).
 TOUCH_SLACK = 1e-4
 
 

@@ -161,17 +161,19 @@ def allowed_contacts(m: MotionPhase) -> frozenset[str]:
 class MotionMargins:
     """Per-key margins of one motion where they are not its margin.
 
-    near: `tight` for what is closer than the margin at either keyframe (other
-    than the contacts the motion enters or leaves): a slot the keyframe NLP
-    could only fill with the tight margin. Held to the margin there, the samples
-    near the keyframe could not be feasible, and the NLP would make the last
-    segment as long as it takes for them to land outside the slot.
+    near: for what is closer than the margin at either keyframe (other than the
+    contacts the motion enters or leaves), half its least distance there, at
+    least `tight`: a slot the keyframe NLP could only fill with a smaller
+    margin. Held to the margin there, the samples near the keyframe could not
+    be feasible, and the NLP would make the last segment as long as it takes for
+    them to land outside the slot. Not `tight` throughout: the NLP holds its
+    samples at the margin, and between two of them a corner dips ~2 mm closer
+    (a cube carried down beside another, placed 1 cm away: 0.8 mm into it, and
+    the physics replay knocked the other over).
     entering / leaving: the contacts the motion ends or starts in, in its last
     or first segment: never closer than at the keyframe (nor than the margin),
     so touching where the keyframe touches; fingers that straddle what they
-    grasp with millimetres to spare keep them on the way down (brushing the
-    object on the way, they measured 1 mm deeper in the independent checker's
-    meshes than in our hulls).
+    grasp with millimetres to spare keep them on the way down.
     """
 
     near: dict[str, float]
@@ -202,7 +204,8 @@ def motion_margins(checker, m: MotionPhase, q_a, q_b, held, moved, margin: float
         for c in cs:
             k = contact_key(c)
             side[k] = min(side.get(k, np.inf), c.distance)
-    near = {k: tight for side in least for k, d in side.items() if d < margin and k not in ends}
+    near = {k: max(tight, min(least[0].get(k, margin), least[1].get(k, margin)) / 2)
+            for side in least for k, d in side.items() if d < margin and k not in ends}
 
     def touch(keys, side):
         return {k: min(margin, side.get(k, margin)) - TOUCH_SLACK for k in keys}

@@ -40,8 +40,9 @@ def _motion_phases(result) -> list[int]:
     return [i for i, p in enumerate(result.phases) if p.end > p.start]
 
 
-def verify(problem: TrajectoryProblem, result, factor: int = 10) -> list[str]:
-    """Violations in words; empty = feasible."""
+def verify(problem: TrajectoryProblem, result, factor: int = 10, fingers=None) -> list[str]:
+    """Violations in words; empty = feasible. `fingers`: (waypoints, k) finger joint
+    values (a solution file's finger columns), else the fingers stay open."""
     if problem.error is not None:
         return [problem.error]
     if result.trajectory is None or not len(result.phases):
@@ -61,13 +62,15 @@ def verify(problem: TrajectoryProblem, result, factor: int = 10) -> list[str]:
         return out + [f"expected {problem.n_keyframes} motion phases for the plan, found "
                       f"{len(moving)}"]
     out += _check_objects(problem, result)
-    out += [msg for _, msg in failing_motions(problem, result, factor)]
+    out += [msg for _, msg in failing_motions(problem, result, factor, fingers)]
     return out
 
 
-def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
-    """[(motion index, message)] for collisions found at `factor` points per segment."""
+def failing_motions(problem: TrajectoryProblem, result, factor: int = 10, fingers=None):
+    """[(motion index, message)] for collisions found at `factor` points per segment
+    (the fingers as `verify` says)."""
     traj = np.asarray(result.trajectory, dtype=float)
+    hand = None if fingers is None else np.asarray(fingers, dtype=float)
     world, checker = problem.world, problem.checker
     out = []
     for k, pi in enumerate(_motion_phases(result)):
@@ -81,17 +84,15 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
             held = (phase.attached, grasp)
         others = {n: t for n, t in before.items() if n != phase.attached}
         n_seg = phase.end - phase.start
-        taus, qs = [], []
-        for i in range(n_seg):
-            a, b = traj[phase.start + i], traj[phase.start + i + 1]
-            for j in range(factor + (1 if i == n_seg - 1 else 0)):
-                s = j / factor
-                taus.append(i + s)
-                qs.append((1 - s) * a + s * b)
+        taus = np.array([i + j / factor for i in range(n_seg)
+                         for j in range(factor + (1 if i == n_seg - 1 else 0))])
+        qs = _along(traj, phase.start, n_seg, taus)
         worst = _held_against_tool(problem, m, traj[phase.start], others, held)
         ignores = [allowed_contacts(m)] * len(qs)
-        for tau, found in zip(taus, checker.distances_many(np.array(qs), others, held, ignores,
-                                                           0.0), strict=True):
+        found_all = checker.distances_many(qs, others, held, ignores, 0.0,
+                                           fingers=None if hand is None else
+                                           _along(hand, phase.start, n_seg, taus))
+        for tau, found in zip(taus.tolist(), found_all, strict=True):
             for c in found:
                 if c.distance < -PENETRATION and (worst is None or c.distance < worst[0]):
                     worst = (c.distance, tau, c)
@@ -101,6 +102,13 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10):
                            f"{c.b.partition(':')[2]}: {100 * d:.1f} cm at waypoint "
                            f"{phase.start + tau:.1f}"))
     return out
+
+
+def _along(values: np.ndarray, start: int, n_seg: int, taus: np.ndarray) -> np.ndarray:
+    """Rows of `values` (one per waypoint) linear between waypoints, at start + tau."""
+    i = np.minimum(taus.astype(int), n_seg - 1)
+    s = (taus - i)[:, None]
+    return (1 - s) * values[start + i] + s * values[start + i + 1]
 
 
 def _held_against_tool(problem, m, q, others, held):

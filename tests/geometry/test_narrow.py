@@ -80,3 +80,22 @@ def test_gjk_alone():
     assert p1[1] == pytest.approx(0.5) and p2[1] == pytest.approx(3.5)
     inside = Placed(b, _at(0.3, 0.2, 0.1))
     assert gjk_distance(pa.support_point, inside.support_point, np.array([1.0, 0, 0])) is None
+
+
+def test_a_hull_is_rounded_by_pybullets_margin(tmp_path):
+    """A mesh's hull is PyBullet's: grown by HULL_MARGIN, so 1 mm closer to a box
+    than its core, separated or penetrating, witness points on the grown surface."""
+    from tampcli.geometry.shapes import HULL_MARGIN, mesh_hulls
+
+    path = tmp_path / "cube.obj"
+    corners = [(x, y, z) for x in (-0.05, 0.05) for y in (-0.05, 0.05) for z in (-0.05, 0.05)]
+    path.write_text("".join(f"v {x} {y} {z}\n" for x, y, z in corners) + "f 1 2 4\nf 5 6 8\n")
+    (hull,) = mesh_hulls(str(path))
+    assert hull.margin == HULL_MARGIN == 1e-3
+    box = primitive("box", (0.1, 0.1, 0.1))
+    for gap in (0.03, -0.004):
+        d, pa, pb, n = _query(hull, _at(0.0, 0.0, 0.0), box, _at(0.1 + gap, 0.0, 0.0))
+        assert d == pytest.approx(gap - HULL_MARGIN, abs=1e-7)
+        np.testing.assert_allclose(n, [1.0, 0.0, 0.0], atol=1e-7)
+        assert pa[0] == pytest.approx(0.05 + HULL_MARGIN, abs=1e-7)
+        assert pb[0] == pytest.approx(0.05 + gap, abs=1e-7)

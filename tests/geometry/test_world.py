@@ -290,3 +290,21 @@ def test_fingers_open_and_close_for_replay(panda):
         assert gap == pytest.approx(0.08, abs=1e-6)
     finally:
         panda.set_state(panda.start)
+
+
+def test_refixed_fingers_match_pybullet(panda):
+    """Frames with the finger joints at given values (a solution file's finger
+    columns) are where PyBullet puts the fingers at those values."""
+    chain, links = panda.chain, panda.finger_links
+    qs = _random_qs(panda, 5, seed=3)
+    values = np.array([[0.0, 0.04], [0.01, 0.02], [0.025, 0.025], [0.04, 0.0], [0.03, 0.01]])
+    frames = chain.refixed(chain.fk_batch(np.array(qs)), dict(zip(links, values.T, strict=True)))
+    try:
+        for row, (q, v) in enumerate(zip(qs, values, strict=True)):
+            panda.set_state(q, fingers=v)
+            expected = _pybullet_link_frames(panda)
+            for i, link in enumerate(chain.links[1:], start=1):
+                np.testing.assert_allclose(frames[row, i], expected[link.name], atol=2e-6,
+                                           err_msg=link.name)
+    finally:
+        panda.set_state(panda.start)

@@ -163,16 +163,8 @@ def test_quick_library_solutions_pass_physics(cli, key, tmp_path):
     assert data["physics"]["max_distance"] < 0.01
 
 
-# Measured at the end of this round: carrying a down beside b, placed 7 cm away, the
-# replay's tracking knocks b over (4 cm, 78 deg during "carry a"); the kinematic check
-# finds no contact deeper than 1 mm. Strict, so a fix is noticed.
-KNOCKED = {"arm-pick-place/p03"}
-
-
 @pytest.mark.slow
-@pytest.mark.parametrize("scene", [
-    pytest.param(s, marks=pytest.mark.xfail(strict=True, reason="b knocked over in replay"))
-    if _key(s) in KNOCKED else s for s in SCENES], ids=[_key(s) for s in SCENES])
+@pytest.mark.parametrize("scene", SCENES, ids=[_key(s) for s in SCENES])
 def test_every_library_solution_passes_physics(cli, scene, tmp_path):
     code, data = _solve_and_validate(cli, scene, tmp_path)
     assert code == 0, data["violations"]

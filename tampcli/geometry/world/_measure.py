@@ -167,7 +167,8 @@ def aabb(pb, client: int, body: int, links=None) -> tuple[np.ndarray, np.ndarray
 def gripper_size(pb, client: int, body: int, fingers, chain, tool: int, q,
                  reach: float = 0.02) -> tuple[float, float] | None:
     """(opening, fingertip depth) of open fingers at configuration q, in the tool frame
-    (chain link `tool`), from the exact support of their collision shapes.
+    (chain link `tool`), from the exact support of their collision shapes (margins
+    included: the solids PyBullet sees).
 
     Opening: the gap along y between the finger parts on either side that
     come within `reach` of the tool origin's height (linkage bars higher up
@@ -185,8 +186,8 @@ def gripper_size(pb, client: int, body: int, fingers, chain, tool: int, q,
             f = to_tool @ frames[by_pb[link]] @ shape.local
             rot, at = f[:3, :3], f[:3, 3]
 
-            def extent(d, rot=rot, at=at, shape=shape):
-                return shape.support(rot.T @ d) + float(d @ at)
+            def extent(d, rot=rot, at=at, shape=shape):  # d: a unit vector
+                return shape.support(rot.T @ d) + float(d @ at) + shape.margin
 
             top = extent(z)
             depth = max(depth, top)

@@ -187,6 +187,15 @@ class World:
         return tuple(zip(self._fingers.open[:k], self._fingers.closed[:k], strict=True))
 
     @property
+    def finger_links(self) -> tuple[int, ...]:
+        """Chain index of the link each finger joint moves, in the order of
+        `set_state`'s `fingers` (the named joints first, then those mimicking them)."""
+        if self._fingers is None:
+            return ()
+        by_pb = {link.pb_index: i for i, link in enumerate(self.chain.links)}
+        return tuple(by_pb[j] for j in self._fingers.pb)
+
+    @property
     def gripper_opening(self) -> float | None:
         """Gap (m) between the open fingers along the tool's y axis, near the tool
         origin: the widest object they close on. None without fingers."""
