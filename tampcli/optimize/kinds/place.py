@@ -95,8 +95,8 @@ class Place(ModeKind):
         disk on the side of the placement that a neighbour occupies (measured: the
         second of two blocks put side by side in a walled bay, the disk between the
         two). When the disk at the place would touch something, every face of the
-        object is tried for the contact, clear at the place first, then clear at the
-        grasp, then nearest the grasp's choice; the grasp's keyframe follows.
+        object is tried for the contact, clear at the grasp first, then clear at the
+        place, then nearest the grasp's choice; the grasp's keyframe follows.
         """
         phi0 = walk.grip[grasp.index]
         problem = walk.problem
@@ -116,7 +116,10 @@ class Place(ModeKind):
             pick = problem.checker.min_distance(
                 q_pick, others, None, frozenset({step.obj}), static=False,
                 horizon=horizon) < horizon
-            return place, pick, abs(math.remainder(phi - phi0, 2 * math.pi))
+            # Clear at the grasp first: the grasp's object stands where it stands, while
+            # the keyframe NLP can still slide the placement within its region (pen-k4:
+            # the top face, clear at the yard, put the disk into the rail at the pen).
+            return pick, place, abs(math.remainder(phi - phi0, 2 * math.pi))
 
         best = min([phi0] + [transforms.yaw_of(start) + d for d in walk.QUARTERS], key=clash)
         if best != phi0:
