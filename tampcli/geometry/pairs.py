@@ -17,7 +17,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from tampcli.geometry import obb, prism, transforms
-from tampcli.geometry.narrow import TOLERANCE, Placed, checked, fcl_distance, signed_distance
+from tampcli.geometry.narrow import (
+    PRISMS,
+    TOLERANCE,
+    Placed,
+    checked,
+    fcl_distance,
+    signed_distance,
+)
 from tampcli.geometry.parts import Part
 
 SCALAR_PAIRS = 4  # groups of at most this many pairs skip the array set-up (measured)
@@ -198,7 +205,7 @@ class Batch:
             query = self.queries[s]
             a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
             placed.append((a, b))
-            if pa.shape.kind == "cylinder" or pb_.shape.kind == "cylinder":
+            if pa.shape.kind in PRISMS and pb_.shape.kind in PRISMS:
                 exact = prism.distance(a, b)
                 if exact is not None:
                     raws.append(exact)

@@ -10,7 +10,10 @@ an interval query, both closed form.
 This is the common case of the planar robot (a vertical cylinder) and of
 blocks on tables, where FCL's cylinder answers are centimetres off (fcl#508)
 and the iterative GJK that would otherwise certify them costs a millisecond
-in Python.
+in Python. Two upright boxes are answered here too: FCL's signed distance
+(libccd's EPA) aborts the process on some touching rectangles ("the origin is
+outside of the polytope", a C++ error Python cannot catch), measured on a
+block set down against a wall.
 """
 
 from __future__ import annotations
@@ -40,13 +43,14 @@ def base(placed):
 
 def distance(a, b):
     """(distance, point on a, point on b, unit normal from a to b), or None when either
-    solid is not an upright prism, or both are rectangles (a polytope pair FCL answers
-    and the projection check certifies)."""
+    solid is not an upright prism."""
     fa, fb = base(a), base(b)
-    if fa is None or fb is None or (fa[0] == "box" and fb[0] == "box"):
+    if fa is None or fb is None:
         return None
     # The planar factor, as (signed distance, point on a, point on b, unit normal a -> b).
-    if fa[0] == "disk" and fb[0] == "disk":
+    if fa[0] == "box" and fb[0] == "box":
+        planar = _boxes(fa, fb)
+    elif fa[0] == "disk" and fb[0] == "disk":
         planar = _disks(fa, fb)
     elif fa[0] == "disk":
         planar = _disk_box(fa, fb)
@@ -132,3 +136,79 @@ def _disk_box(disk, box):
     # centre itself when it is inside the rectangle.
     common = (wx, wy) if outside else (c[0], c[1])
     return d, pa, (wx, wy), n, common
+
+
+def _corners(box) -> np.ndarray:
+    """The rectangle's corners (4, 2), counter-clockwise."""
+    centre, (ux, uy), (hx, hy) = box[1], box[2], box[3]
+    u, v = np.array([ux, uy]), np.array([-uy, ux])
+    return np.array([centre + sx * hx * u + sy * hy * v
+                     for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1))])
+
+
+def _segment_point(p, a, b):
+    """The point of segment ab nearest p."""
+    ab = b - a
+    t = float(np.clip((p - a) @ ab / max(ab @ ab, 1e-300), 0.0, 1.0))
+    return a + t * ab
+
+
+def _boxes(fa, fb):
+    """Rectangle a vs rectangle b in the plane: (signed distance, point on a, point on
+    b, normal a -> b, a point of both when they overlap). Apart: the nearest pair of
+    a corner and a side. Overlapping: the separating-axis depth (the least
+    translation that separates two convex polygons is along one of their sides'
+    normals), the witnesses the deepest corner of a and its shift out of b."""
+    A, B = _corners(fa), _corners(fb)
+    axes = []
+    for box in (fa, fb):
+        ux, uy = box[2]
+        axes += [np.array([ux, uy]), np.array([-uy, ux])]
+    gaps = []
+    for n in axes:
+        pa, pb = A @ n, B @ n
+        if pa.max() - pb.min() <= pb.max() - pa.min():  # b on the + side of a along n
+            gaps.append((pb.min() - pa.max(), n))
+        else:
+            gaps.append((pa.min() - pb.max(), -n))
+    gap, n = max(gaps, key=lambda g: g[0])
+    if gap > 0:
+        best = None
+        for P, Q, flip in ((A, B, False), (B, A, True)):
+            for p in P:
+                for i in range(4):
+                    q = _segment_point(p, Q[i], Q[(i + 1) % 4])
+                    d = float(np.linalg.norm(q - p))
+                    if best is None or d < best[0]:
+                        best = (d, (q, p) if flip else (p, q))
+        d, (pa, pb) = best
+        normal = (pb - pa) / d if d > 1e-12 else n
+        return d, tuple(pa), tuple(pb), (float(normal[0]), float(normal[1])), None
+    # Overlapping: depth -gap along n; a's deepest corner into b, and where it leaves b.
+    proj = A @ n
+    deep = A[np.isclose(proj, proj.max(), rtol=0.0, atol=1e-12)].mean(axis=0)
+    pa, pb = deep, deep + gap * n
+    return gap, tuple(pa), tuple(pb), (float(n[0]), float(n[1])), tuple(_overlap_point(A, B))
+
+
+def _overlap_point(A, B) -> np.ndarray:
+    """A point of both convex polygons (they overlap): the mean of a clipped by b."""
+    poly = list(A)
+    for i in range(4):
+        a, b = B[i], B[(i + 1) % 4]
+        edge = b - a
+
+        def inside(p, a=a, edge=edge):
+            return edge[0] * (p[1] - a[1]) - edge[1] * (p[0] - a[0]) >= -1e-12
+
+        out = []
+        for j, p in enumerate(poly):
+            q = poly[(j + 1) % len(poly)]
+            if inside(p):
+                out.append(p)
+            if inside(p) != inside(q):
+                den = edge[0] * (q[1] - p[1]) - edge[1] * (q[0] - p[0])
+                t = (edge[0] * (a[1] - p[1]) - edge[1] * (a[0] - p[0])) / den
+                out.append(p + t * (q - p))
+        poly = out or poly
+    return np.mean(poly, axis=0)
