@@ -172,7 +172,7 @@ def solving(paths: InputPaths, options: SolveOptions = SolveOptions(),
             checker = CollisionChecker(world)
         with timers.stage("scene"):
             check_start_state(world, checker, inputs.scene_source)
-        solution = _solve_geometric(inputs, _Geometry(world, checker), options, timers,
+        solution = _solve_geometric(inputs, Geometry(world, checker), options, timers,
                                     on_event)
         yield Solved(solution, inputs, world)
 
@@ -227,14 +227,14 @@ def _solve_symbolic(inputs: ParsedInputs, options: SolveOptions, timers: Timers)
 
 
 @dataclass(frozen=True)
-class _Geometry:
+class Geometry:
     """The solve's one World and the CollisionChecker over it."""
 
     world: World
     checker: CollisionChecker
 
 
-def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
+def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOptions,
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
         from tampcli.bnb.eliminate import eliminate_useless
@@ -244,7 +244,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
         from tampcli.search.topk import TopK
 
         deadline = time.perf_counter() + options.bnb.time_limit
-        evaluate = _Evaluator(inputs, geometry, options, deadline)
+        evaluate = Evaluator(inputs, geometry, options, deadline)
     modes = inputs.modes
     movable = frozenset(geometry.world.movable_names)
 
@@ -264,9 +264,18 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
             source.learn(blocker)
 
     bnb_start = time.perf_counter()
-    result = branch_and_bound(_TimedSkeletons(source, timers), evaluate, options.bnb,
-                              is_geometric=lambda op: modes.get_mode(op.action).geometric,
-                              on_event=on_event, learn=learn, relax=evaluate.relaxed)
+    search = dict(is_geometric=lambda op: modes.get_mode(op.action).geometric,
+                  on_event=on_event, learn=learn, relax=evaluate.relaxed)
+    skeletons = _TimedSkeletons(source, timers)
+    if options.bnb.jobs == 1:
+        result = branch_and_bound(skeletons, evaluate, options.bnb, **search)
+    else:
+        from tampcli.bnb.parallel import parallel_branch_and_bound
+        from tampcli.skeleton_pool import SkeletonPool
+
+        with SkeletonPool(inputs.paths, options, options.bnb.jobs, deadline) as pool:
+            result = parallel_branch_and_bound(skeletons, pool.submit, evaluate, options.bnb,
+                                               **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
     result = eliminate_useless(result, evaluate,
                                lambda ops, i: without_step(inputs.task, ops, i),
@@ -279,11 +288,11 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
     return _solution(inputs, geometry.world, options, result, _stats(timers, result.stats))
 
 
-class _Evaluator:
+class Evaluator:
     """`evaluate(ops, stage, warm)` for branch and bound: lowers each skeleton once
     and solves a stage within what is left of the solve's time."""
 
-    def __init__(self, inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
+    def __init__(self, inputs: ParsedInputs, geometry: Geometry, options: SolveOptions,
                  deadline: float):
         from tampcli.optimize.problem import lower
         from tampcli.optimize.relaxed import relaxed_bound
