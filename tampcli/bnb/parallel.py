@@ -3,15 +3,17 @@
 The main process draws skeletons, prunes them before any NLP, and keeps the
 books; each skeleton that needs its NLPs goes out as a `SkeletonJob` and
 comes back as a `SkeletonRun` (every stage run, the keyframe problems of its
-prefixes). At most `jobs` skeletons are out at once.
+prefixes). At most `2 * jobs` skeletons are out at once: `jobs` solving and as
+many queued, so that a worker done early goes on with the next skeleton while
+an older, slower one holds up the books (results are taken in rank order).
 
 Deterministic like the serial search: results are taken in rank order, one
 at a time, and the next skeleton is drawn right after each; so what the
 books hold when a skeleton is drawn (incumbent, learned obstructions,
 infeasible prefixes, keyframe warm starts) depends on ranks, not on which
 worker finished first. What differs from `--jobs 1`: a skeleton is drawn
-while the `jobs - 1` before it are still out, so it knows nothing of their
-results (no warm start from them, their learning not applied yet; learning
+while up to `2 * jobs - 1` before it are still out, so it knows nothing of
+their results (no warm start from them, their learning not applied yet; learning
 is applied in rank order as results come back). Its keyframe bound is
 judged against the incumbent when it is taken, as the serial search would;
 a path solved meanwhile is then thrown away.
@@ -115,12 +117,14 @@ def parallel_branch_and_bound(
     learn: Callable[[Any], None] | None = None,
     relax: Relax | None = None,
 ) -> BnBResult:
-    """branch_and_bound with each skeleton's NLPs sent through `submit` (at most
-    `options.jobs` at once); `evaluate` (in this process) serves the odd prefix
-    the books lack. See the module docstring."""
+    """branch_and_bound with each skeleton's NLPs sent through `submit` (to
+    `options.jobs` workers); `evaluate` (in this process) serves the odd prefix
+    the books lack. See the module docstring. `stats["optimize_seconds"]` is
+    summed over the workers."""
     search = _ParallelSearch(skeletons, evaluate, options, is_geometric, on_event,
                              time.perf_counter, learn, relax)
     search.submit = submit
+    search.stats["jobs"] = options.jobs
     return search.run()
 
 
@@ -141,7 +145,7 @@ class _ParallelSearch(_Search):
             if self.elapsed() >= self.options.time_limit:
                 stop = "time"
                 break
-            if stop is None and len(out) < self.options.jobs:
+            if stop is None and len(out) < 2 * self.options.jobs:
                 stop = self._draw_next(iterator, out)
                 continue
             if not out or stop == "first":
