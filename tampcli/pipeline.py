@@ -274,8 +274,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOpt
         from tampcli.skeleton_pool import SkeletonPool
 
         with SkeletonPool(inputs.paths, options, options.bnb.jobs, deadline) as pool:
-            result = parallel_branch_and_bound(skeletons, pool.submit, evaluate, options.bnb,
-                                               **search)
+            result = parallel_branch_and_bound(skeletons, pool, evaluate, options.bnb, **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
     result = eliminate_useless(result, evaluate,
                                lambda ops, i: without_step(inputs.task, ops, i),

@@ -10,6 +10,7 @@ nothing from a worker reaches the terminal.
 
 from __future__ import annotations
 
+import math
 import multiprocessing
 import os
 import time
@@ -27,7 +28,11 @@ class SkeletonPool:
 
     def __init__(self, paths: InputPaths, options: SolveOptions, jobs: int, deadline: float):
         # perf_counter is per process: workers get the deadline on the wall clock.
-        self._init = (paths, options, time.time() + (deadline - time.perf_counter()))
+        self._context = multiprocessing.get_context("spawn")
+        # The incumbent's objective, read by every worker (run_skeleton's `incumbent`).
+        self._best = self._context.RawValue("d", math.inf)
+        self._init = (paths, options, time.time() + (deadline - time.perf_counter()),
+                      self._best)
         self._jobs = jobs
         self._executor: ProcessPoolExecutor | None = None
 
@@ -46,10 +51,13 @@ class SkeletonPool:
             self.close()
             return self._pool().submit(_run, job)
 
+    def improved(self, objective: float) -> None:
+        self._best.value = objective
+
     def _pool(self) -> ProcessPoolExecutor:
         if self._executor is None:
             self._executor = ProcessPoolExecutor(
-                self._jobs, mp_context=multiprocessing.get_context("spawn"),
+                self._jobs, mp_context=self._context,
                 initializer=_start, initargs=self._init)
         return self._executor
 
@@ -73,7 +81,7 @@ class _Worker:
     """What a worker builds once: the solve's inputs, World, CollisionChecker and
     Evaluator."""
 
-    def __init__(self, paths: InputPaths, options: SolveOptions, deadline: float):
+    def __init__(self, paths: InputPaths, options: SolveOptions, deadline: float, best):
         from tampcli.geometry.collision import CollisionChecker
         from tampcli.geometry.world import World
 
@@ -84,11 +92,13 @@ class _Worker:
                                   local_deadline)
         self.ops = {op.name: op for op in inputs.task.operators}
         self.modes = inputs.modes
+        self.best = best
 
     def run(self, job: SkeletonJob) -> SkeletonRun:
         ops = tuple(self.ops[name] for name in job.names)
         return run_skeleton(job, ops, self.evaluate,
-                            lambda op: self.modes.get_mode(op.action).geometric)
+                            lambda op: self.modes.get_mode(op.action).geometric,
+                            lambda: self.best.value)
 
 
 # The one piece of state of a worker process: built by the pool's initializer,
@@ -96,11 +106,11 @@ class _Worker:
 _worker: list[_Worker] = []
 
 
-def _start(paths: InputPaths, options: SolveOptions, deadline: float) -> None:
+def _start(paths: InputPaths, options: SolveOptions, deadline: float, best) -> None:
     null = os.open(os.devnull, os.O_WRONLY)
     os.dup2(null, 1)
     os.dup2(null, 2)
-    _worker.append(_Worker(paths, options, deadline))
+    _worker.append(_Worker(paths, options, deadline, best))
 
 
 def _run(job: SkeletonJob) -> SkeletonRun:

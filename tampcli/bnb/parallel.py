@@ -27,12 +27,13 @@ failed skeleton, the reason in its record.
 
 from __future__ import annotations
 
+import math
 import time
 from collections import deque
 from collections.abc import Callable, Iterable
 from concurrent.futures import FIRST_COMPLETED, Future, wait
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Protocol
 
 from tampcli.bnb import STAGES, _Search, _Trial
 from tampcli.bnb.outcome import TIE
@@ -67,12 +68,27 @@ class SkeletonRun:
     seconds: float
 
 
-Submit = Callable[[SkeletonJob], Future]  # of a SkeletonRun
+class Workers(Protocol):
+    """Where skeletons are solved: `submit` gives a Future of the SkeletonRun;
+    `improved` hears of each new incumbent (so that a skeleton already out can
+    stop at its keyframes)."""
+
+    def submit(self, job: SkeletonJob) -> Future: ...
+
+    def improved(self, objective: float) -> None: ...
 
 
 def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
-                 is_geometric: Callable[[Any], bool]) -> SkeletonRun:
-    """The serial search's stages for one skeleton (run in a worker)."""
+                 is_geometric: Callable[[Any], bool],
+                 incumbent: Callable[[], float] = lambda: math.inf) -> SkeletonRun:
+    """The serial search's stages for one skeleton (run in a worker).
+
+    `incumbent()` is the best objective known now (`Workers.improved`), maybe
+    lower than the job's: whatever it says, the books come out the same, as a
+    keyframe bound above it is above the incumbent when the run is taken (it
+    only falls, and only by skeletons taken before this one); it saves the path
+    stage of a skeleton that cannot win.
+    """
     started = time.perf_counter()
     tree, stages, counts = PrefixTree(), [], [0, 0]
     for prefix, result in job.known:
@@ -95,9 +111,9 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
                 shortest_failing_prefix(ops, job.names, tree, stage, is_geometric)
             break
         warm = result
-        if name == "keyframes" and result.cost is not None and job.incumbent is not None \
-                and not job.anytime \
-                and result.cost + job.weight * job.symbolic >= job.incumbent:
+        best = min(math.inf if job.incumbent is None else job.incumbent, incumbent())
+        if name == "keyframes" and result.cost is not None and not job.anytime \
+                and result.cost + job.weight * job.symbolic >= best:
             break
     known = {prefix for prefix, _ in job.known}
     keyframes = tuple((job.names[:i], tree.get(job.names[:i]))
@@ -109,7 +125,7 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
 
 def parallel_branch_and_bound(
     skeletons: SkeletonSource | Iterable,
-    submit: Submit,
+    workers: Workers,
     evaluate: Evaluate,
     options: BnBOptions,
     is_geometric: Callable[[Any], bool] = lambda op: True,
@@ -117,13 +133,13 @@ def parallel_branch_and_bound(
     learn: Callable[[Any], None] | None = None,
     relax: Relax | None = None,
 ) -> BnBResult:
-    """branch_and_bound with each skeleton's NLPs sent through `submit` (to
-    `options.jobs` workers); `evaluate` (in this process) serves the odd prefix
+    """branch_and_bound with each skeleton's NLPs sent to `workers` (`options.jobs`
+    of them); `evaluate` (in this process) serves the odd prefix
     the books lack. See the module docstring. `stats["optimize_seconds"]` is
     summed over the workers."""
     search = _ParallelSearch(skeletons, evaluate, options, is_geometric, on_event,
                              time.perf_counter, learn, relax)
-    search.submit = submit
+    search.workers = workers
     search.stats["jobs"] = options.jobs
     return search.run()
 
@@ -135,7 +151,7 @@ class _Out:
 
 
 class _ParallelSearch(_Search):
-    submit: Submit
+    workers: Workers
 
     def run(self) -> BnBResult:
         iterator = iter(self.skeletons)
@@ -174,7 +190,7 @@ class _ParallelSearch(_Search):
         if not self._pruned_before_nlp(trial):
             self.emit(Event("stage", trial.rank, trial.names, trial.symbolic,
                             stage=STAGES[0], seconds=self.elapsed()))
-            out.append(_Out(trial, self.submit(self._job(trial))))
+            out.append(_Out(trial, self.workers.submit(self._job(trial))))
         return None
 
     def _job(self, trial: _Trial) -> SkeletonJob:
@@ -209,6 +225,12 @@ class _ParallelSearch(_Search):
             if stage == "path":
                 trial.path_result, trial.nlp_cost = result, result.cost
         self._record(trial)
+
+    def _record(self, trial: _Trial) -> None:
+        before = self.incumbent
+        super()._record(trial)
+        if self.incumbent is not before:
+            self.workers.improved(self.incumbent.objective)
 
     def _failed(self, trial: _Trial, reason: str) -> None:
         trial.outcome, trial.reason = "infeasible", reason

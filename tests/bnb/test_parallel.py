@@ -2,6 +2,7 @@
 skeletons and evaluators run in a thread pool: the books must come out as the
 serial search's, whatever order the evaluations finish in."""
 
+import math
 import random
 import threading
 import time
@@ -33,30 +34,34 @@ TABLE = {
 }
 
 
-def _pooled(evaluate, workers, delays=None):
-    """A submit over a thread pool that runs the whole skeleton, as a worker does;
+class _Threads:
+    """Workers: a thread pool that runs whole skeletons, as a worker process does;
     `delays` (seconds by skeleton) scrambles the order results come back in."""
-    pool = ThreadPoolExecutor(workers)
 
-    def submit(job):
+    def __init__(self, evaluate, workers, delays=None):
+        self.pool, self.evaluate, self.delays = ThreadPoolExecutor(workers), evaluate, delays
+        self.best = math.inf
+
+    def submit(self, job):
         def run():
-            time.sleep((delays or {}).get(job.names, 0.0))
+            time.sleep((self.delays or {}).get(job.names, 0.0))
             ops = tuple(type("Op", (), {"name": n})() for n in job.names)
-            return run_skeleton(job, ops, evaluate, lambda op: True)
+            return run_skeleton(job, ops, self.evaluate, lambda op: True, lambda: self.best)
 
-        return pool.submit(run)
+        return self.pool.submit(run)
 
-    return pool, submit
+    def improved(self, objective):
+        self.best = objective
 
 
 def _parallel(plans, table, workers, delays=None, **options):
     evaluate = table_evaluator(table)
-    pool, submit = _pooled(evaluate, workers, delays)
+    threads = _Threads(evaluate, workers, delays)
     try:
-        return parallel_branch_and_bound(Source(plans), submit, evaluate,
+        return parallel_branch_and_bound(Source(plans), threads, evaluate,
                                          BnBOptions(jobs=workers, **options))
     finally:
-        pool.shutdown(wait=False, cancel_futures=True)
+        threads.pool.shutdown(wait=False, cancel_futures=True)
 
 
 def _books(result):
@@ -93,11 +98,11 @@ def test_a_failing_evaluation_is_that_skeleton_failed_and_the_search_goes_on():
             raise RuntimeError("the simulator fell over")
         return table_evaluator(TABLE)(ops, stage, warm)
 
-    pool, submit = _pooled(evaluate, 2)
+    threads = _Threads(evaluate, 2)
     try:
-        result = parallel_branch_and_bound(Source(PLANS), submit, evaluate, BnBOptions(jobs=2))
+        result = parallel_branch_and_bound(Source(PLANS), threads, evaluate, BnBOptions(jobs=2))
     finally:
-        pool.shutdown(wait=False)
+        threads.pool.shutdown(wait=False)
     assert result.status == "solved"
     assert [op.name for op in result.best_plan] == ["i", "j", "k"]
     failed = [r for r in result.skeletons if r.plan[0] == "c"]
@@ -114,14 +119,14 @@ def test_the_time_limit_cancels_what_is_out():
         release.wait(5.0)
         return R("solved", 1.0)
 
-    pool, submit = _pooled(slow, 2)
+    threads = _Threads(slow, 2)
     started = time.perf_counter()
     try:
-        result = parallel_branch_and_bound(Source(PLANS), submit, slow,
+        result = parallel_branch_and_bound(Source(PLANS), threads, slow,
                                            BnBOptions(jobs=2, time_limit=0.3))
     finally:
         release.set()
-        pool.shutdown(wait=False, cancel_futures=True)
+        threads.pool.shutdown(wait=False, cancel_futures=True)
     assert time.perf_counter() - started < 2.0
     assert result.status == "limit" and result.stats["stop"] == "time limit"
     assert [r.outcome for r in result.skeletons] == ["not reached"] * 4  # 2 * jobs out
@@ -141,3 +146,32 @@ def test_jobs_is_checked():
     for bad in (0, -1, 1.5, True):
         with pytest.raises(OptionError, match="jobs"):
             BnBOptions(jobs=bad)
+
+
+class _Deaf(_Threads):
+    """Workers that never hear of a new incumbent."""
+
+    def improved(self, objective):
+        pass
+
+
+def test_a_new_incumbent_spares_the_path_stage_of_a_skeleton_out_and_changes_no_book():
+    plans = [(("c", "d"), 2.0), (("x", "y"), 2.0)]
+    table = {(("c",), "keyframes"): R("solved", 1.0), (("c",), "path"): R("solved", 1.5),
+             (("x",), "keyframes"): R("solved", 2.0), (("x",), "path"): R("solved", 2.5)}
+    books, paths = [], []
+    for kind in (_Threads, _Deaf):
+        calls = []
+        evaluate = table_evaluator(table, calls)
+        # ("x", "y") starts once ("c", "d") is taken: its keyframe bound 2.2 is above 1.7.
+        threads = kind(evaluate, 2, delays={("x", "y"): 0.3})
+        try:
+            result = parallel_branch_and_bound(Source(plans), threads, evaluate,
+                                               BnBOptions(jobs=2))
+        finally:
+            threads.pool.shutdown(wait=False)
+        books.append(_books(result))
+        paths.append([names for names, stage in calls if stage == "path"])
+    assert books[0] == books[1]
+    assert books[0][1][2:4] == ("pruned", "keyframes")
+    assert paths == [[("c", "d")], [("c", "d"), ("x", "y")]]
