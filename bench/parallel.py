@@ -108,9 +108,26 @@ def report(results: dict[str, list[dict]], started_load: tuple, seconds: float) 
                       + f" (median {statistics.median(pairs):.2f}x). Median CPU: --jobs 1 "
                       f"{statistics.median(cpus[1]):.1f} s, --jobs 2 "
                       f"{statistics.median(cpus[2]):.1f} s. Objectives: "
-                      + ", ".join(_fmt(o, ".6f") for o in sorted(objectives, key=str)) + "."]
+                      + ", ".join(_fmt(o, ".6f") for o in sorted(objectives, key=str)) + ".",
+                      "", _estimate(rows)]
         lines.append("")
     return "\n".join(lines)
+
+
+def _estimate(rows: list[dict]) -> str:
+    """What the runs say of idle cores, an estimate: a CPU-bound run takes its CPU
+    seconds divided by the processes busy at once (--jobs 2: the workers' NLP
+    seconds over the wall time; --jobs 1: one)."""
+    two = [r for r in rows if r["jobs"] == 2 and r["nlp"]]
+    one = [r["cpu"] for r in rows if r["jobs"] == 1]
+    if not two or not one:
+        return ""
+    busy = statistics.median(r["nlp"] / r["wall"] for r in two)
+    cpu = statistics.median(r["cpu"] for r in two)
+    return (f"Estimate for two idle cores (not measured): --jobs 2 kept {busy:.2f} workers "
+            f"busy on average, so its {cpu:.1f} CPU s would take about {cpu / busy:.1f} s "
+            f"against {statistics.median(one):.1f} s serially: "
+            f"{statistics.median(one) / (cpu / busy):.2f}x.")
 
 
 def _scheduling() -> str:
