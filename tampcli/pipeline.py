@@ -172,7 +172,7 @@ def solving(paths: InputPaths, options: SolveOptions = SolveOptions(),
             checker = CollisionChecker(world)
         with timers.stage("scene"):
             check_start_state(world, checker, inputs.scene_source)
-        solution = _solve_geometric(inputs, Geometry(world, checker), options, timers,
+        solution = _solve_geometric(inputs, _Geometry(world, checker), options, timers,
                                     on_event)
         yield Solved(solution, inputs, world)
 
@@ -227,14 +227,14 @@ def _solve_symbolic(inputs: ParsedInputs, options: SolveOptions, timers: Timers)
 
 
 @dataclass(frozen=True)
-class Geometry:
+class _Geometry:
     """The solve's one World and the CollisionChecker over it."""
 
     world: World
     checker: CollisionChecker
 
 
-def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOptions,
+def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
         from tampcli.bnb.eliminate import eliminate_useless
@@ -244,7 +244,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOpt
         from tampcli.search.topk import TopK
 
         deadline = time.perf_counter() + options.bnb.time_limit
-        evaluate = Evaluator(inputs, geometry, options, deadline)
+        evaluate = _Evaluator(inputs, geometry, options, deadline)
     modes = inputs.modes
     movable = frozenset(geometry.world.movable_names)
 
@@ -273,7 +273,8 @@ def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOpt
         from tampcli.bnb.parallel import parallel_branch_and_bound
         from tampcli.skeleton_pool import SkeletonPool
 
-        with SkeletonPool(inputs.paths, options, options.bnb.jobs, deadline) as pool:
+        with SkeletonPool(_worker_parts, (inputs.paths, options), options.bnb.jobs,
+                          deadline) as pool:
             result = parallel_branch_and_bound(skeletons, pool, evaluate, options.bnb, **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
     result = eliminate_useless(result, evaluate,
@@ -287,11 +288,11 @@ def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOpt
     return _solution(inputs, geometry.world, options, result, _stats(timers, result.stats))
 
 
-class Evaluator:
+class _Evaluator:
     """`evaluate(ops, stage, warm)` for branch and bound: lowers each skeleton once
     and solves a stage within what is left of the solve's time."""
 
-    def __init__(self, inputs: ParsedInputs, geometry: Geometry, options: SolveOptions,
+    def __init__(self, inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
                  deadline: float):
         from tampcli.optimize.problem import lower
         from tampcli.optimize.relaxed import relaxed_bound
@@ -319,6 +320,21 @@ class Evaluator:
     def relaxed(self, ops):
         """The prefix's relaxed bound (optimize/relaxed.py), None off the planar robot."""
         return self.relaxed_bound(self._lowered(ops))
+
+
+def _worker_parts(paths: InputPaths, options: SolveOptions, deadline: float):
+    """What a skeleton_pool worker builds once, in its own process: (an evaluator
+    over a World and CollisionChecker of its own, the operators by name, which are
+    geometric)."""
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.world import World
+
+    inputs = read_inputs(paths, Timers())
+    world = World(inputs.scene)
+    evaluate = _Evaluator(inputs, _Geometry(world, CollisionChecker(world)), options, deadline)
+    modes = inputs.modes
+    return (evaluate, {op.name: op for op in inputs.task.operators},
+            lambda op: modes.get_mode(op.action).geometric)
 
 
 def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result: BnBResult,

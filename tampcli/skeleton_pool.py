@@ -2,10 +2,12 @@
 World of its own.
 
 PyBullet is not fork-safe once a client is connected, so workers are spawned
-fresh: each reads the inputs again and builds its World and CollisionChecker
-once, in its initializer, then serves skeleton after skeleton. A worker's
-stdout and stderr go to the null device (PyBullet writes to them from C):
-nothing from a worker reaches the terminal.
+fresh: each builds what it needs once, in its initializer (`build`, a
+module-level function so that it pickles by name: the pipeline's reads the
+inputs again and makes a World, a CollisionChecker and an evaluator), then
+serves skeleton after skeleton. A worker's stdout and stderr go to the null
+device (PyBullet writes to them from C): nothing from a worker reaches the
+terminal.
 """
 
 from __future__ import annotations
@@ -14,25 +16,29 @@ import math
 import multiprocessing
 import os
 import time
+from collections.abc import Callable
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 
 from tampcli.bnb.parallel import SkeletonJob, SkeletonRun, run_skeleton
-from tampcli.pipeline import Evaluator, Geometry, InputPaths, SolveOptions, Timers, read_inputs
+
+# build(*args, deadline) -> (evaluate, operators by name, is_geometric); `deadline`
+# is a perf_counter time of the worker's own.
+Build = Callable[..., tuple]
 
 
 class SkeletonPool:
-    """`jobs` spawned workers for `paths`; the solve's `deadline` (a perf_counter
-    time in this process) bounds their NLPs too. Use as a context manager: on exit,
-    work not started is cancelled and running workers are ended."""
+    """`jobs` spawned workers, each set up by `build(*args, deadline)`; the solve's
+    `deadline` (a perf_counter time in this process) bounds their NLPs too. Use as
+    a context manager: on exit, work not started is cancelled and running workers
+    are ended."""
 
-    def __init__(self, paths: InputPaths, options: SolveOptions, jobs: int, deadline: float):
-        # perf_counter is per process: workers get the deadline on the wall clock.
+    def __init__(self, build: Build, args: tuple, jobs: int, deadline: float):
         self._context = multiprocessing.get_context("spawn")
         # The incumbent's objective, read by every worker (run_skeleton's `incumbent`).
         self._best = self._context.RawValue("d", math.inf)
-        self._init = (paths, options, time.time() + (deadline - time.perf_counter()),
-                      self._best)
+        # perf_counter is per process: workers get the deadline on the wall clock.
+        self._init = (build, args, time.time() + (deadline - time.perf_counter()), self._best)
         self._jobs = jobs
         self._executor: ProcessPoolExecutor | None = None
 
@@ -57,8 +63,7 @@ class SkeletonPool:
     def _pool(self) -> ProcessPoolExecutor:
         if self._executor is None:
             self._executor = ProcessPoolExecutor(
-                self._jobs, mp_context=self._context,
-                initializer=_start, initargs=self._init)
+                self._jobs, mp_context=self._context, initializer=_start, initargs=self._init)
         return self._executor
 
     def close(self) -> None:
@@ -78,27 +83,14 @@ class SkeletonPool:
 
 
 class _Worker:
-    """What a worker builds once: the solve's inputs, World, CollisionChecker and
-    Evaluator."""
-
-    def __init__(self, paths: InputPaths, options: SolveOptions, deadline: float, best):
-        from tampcli.geometry.collision import CollisionChecker
-        from tampcli.geometry.world import World
-
-        inputs = read_inputs(paths, Timers())
-        world = World(inputs.scene)
+    def __init__(self, build: Build, args: tuple, deadline: float, best):
         local_deadline = time.perf_counter() + (deadline - time.time())
-        self.evaluate = Evaluator(inputs, Geometry(world, CollisionChecker(world)), options,
-                                  local_deadline)
-        self.ops = {op.name: op for op in inputs.task.operators}
-        self.modes = inputs.modes
+        self.evaluate, self.ops, self.is_geometric = build(*args, local_deadline)
         self.best = best
 
     def run(self, job: SkeletonJob) -> SkeletonRun:
         ops = tuple(self.ops[name] for name in job.names)
-        return run_skeleton(job, ops, self.evaluate,
-                            lambda op: self.modes.get_mode(op.action).geometric,
-                            lambda: self.best.value)
+        return run_skeleton(job, ops, self.evaluate, self.is_geometric, lambda: self.best.value)
 
 
 # The one piece of state of a worker process: built by the pool's initializer,
@@ -106,11 +98,11 @@ class _Worker:
 _worker: list[_Worker] = []
 
 
-def _start(paths: InputPaths, options: SolveOptions, deadline: float, best) -> None:
+def _start(build: Build, args: tuple, deadline: float, best) -> None:
     null = os.open(os.devnull, os.O_WRONLY)
     os.dup2(null, 1)
     os.dup2(null, 2)
-    _worker.append(_Worker(paths, options, deadline, best))
+    _worker.append(_Worker(build, args, deadline, best))
 
 
 def _run(job: SkeletonJob) -> SkeletonRun:
