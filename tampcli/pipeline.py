@@ -264,9 +264,18 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
             source.learn(blocker)
 
     bnb_start = time.perf_counter()
-    result = branch_and_bound(_TimedSkeletons(source, timers), evaluate, options.bnb,
-                              is_geometric=lambda op: modes.get_mode(op.action).geometric,
-                              on_event=on_event, learn=learn, relax=evaluate.relaxed)
+    search = dict(is_geometric=lambda op: modes.get_mode(op.action).geometric,
+                  on_event=on_event, learn=learn, relax=evaluate.relaxed)
+    skeletons = _TimedSkeletons(source, timers)
+    if options.bnb.jobs == 1:
+        result = branch_and_bound(skeletons, evaluate, options.bnb, **search)
+    else:
+        from tampcli.bnb.parallel import parallel_branch_and_bound
+        from tampcli.skeleton_pool import SkeletonPool
+
+        with SkeletonPool(_worker_parts, (inputs.paths, options), options.bnb.jobs,
+                          deadline) as pool:
+            result = parallel_branch_and_bound(skeletons, pool, evaluate, options.bnb, **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
     result = eliminate_useless(result, evaluate,
                                lambda ops, i: without_step(inputs.task, ops, i),
@@ -311,6 +320,21 @@ class _Evaluator:
     def relaxed(self, ops):
         """The prefix's relaxed bound (optimize/relaxed.py), None off the planar robot."""
         return self.relaxed_bound(self._lowered(ops))
+
+
+def _worker_parts(paths: InputPaths, options: SolveOptions, deadline: float):
+    """What a skeleton_pool worker builds once, in its own process: (an evaluator
+    over a World and CollisionChecker of its own, the operators by name, which are
+    geometric)."""
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.world import World
+
+    inputs = read_inputs(paths, Timers())
+    world = World(inputs.scene)
+    evaluate = _Evaluator(inputs, _Geometry(world, CollisionChecker(world)), options, deadline)
+    modes = inputs.modes
+    return (evaluate, {op.name: op for op in inputs.task.operators},
+            lambda op: modes.get_mode(op.action).geometric)
 
 
 def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result: BnBResult,

@@ -19,7 +19,7 @@ LAYERS = (
     ("bnb",),
     ("minlp",),
     ("render",),
-    ("pipeline",),
+    ("pipeline", "skeleton_pool"),
     ("batch",),
     ("cli", "__main__"),
 )

@@ -103,6 +103,8 @@ def child_command(job: Job, options: RunOptions) -> list[str]:
     if options.memory_mb is not None:
         head += ["--memory-mb", str(options.memory_mb)]
     args = [command, job.domain or "", job.problem, "--json"]
+    if not options.symbolic:  # the batch runs problems side by side: one core each
+        args += ["--jobs", "1"]
     if options.time_limit is not None:
         args += ["--time-limit", f"{options.time_limit:g}"]
     if options.video_dir is not None:

@@ -27,6 +27,8 @@ class BnBOptions:
         prefix and forbid every skeleton that starts with it.
     first: stop at the first feasible skeleton (its solution verified), without
         looking for a better one.
+    jobs: skeletons whose NLPs are solved at once, each in a worker process with a
+        World of its own (bnb/parallel.py); 1 solves them here, one after another.
     """
 
     max_skeletons: int = 20
@@ -35,9 +37,11 @@ class BnBOptions:
     anytime: bool = False
     prefix_pruning: bool = True
     first: bool = False
+    jobs: int = 1
 
     def __post_init__(self):
         require_int(self.max_skeletons, "max_skeletons", 1)
+        require_int(self.jobs, "jobs", 1)
         require_number(self.time_limit, "time_limit", positive=True, unit="s", finite=False)
         require_number(self.symbolic_weight, "symbolic_weight")
 

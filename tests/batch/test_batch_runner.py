@@ -106,6 +106,7 @@ def test_child_command_carries_limits_and_video(tmp_path):
     assert args[args.index("--time-limit") + 1] == "7.5"
     assert args[args.index("--video") + 1] == str(tmp_path / "gripper-prob01.mp4")
     assert command[command.index("--memory-mb") + 1] == "512"
+    assert args[args.index("--jobs") + 1] == "1"  # problems side by side, not their skeletons
     symbolic = child_command(job, RunOptions(symbolic=True))
     assert symbolic[symbolic.index("--") + 1] == "plan" and "--time-limit" not in symbolic
 

@@ -1,0 +1,109 @@
+"""Worker processes that solve whole skeletons (bnb/parallel.py), each with a
+World of its own.
+
+PyBullet is not fork-safe once a client is connected, so workers are spawned
+fresh: each builds what it needs once, in its initializer (`build`, a
+module-level function so that it pickles by name: the pipeline's reads the
+inputs again and makes a World, a CollisionChecker and an evaluator), then
+serves skeleton after skeleton. A worker's stdout and stderr go to the null
+device (PyBullet writes to them from C): nothing from a worker reaches the
+terminal.
+"""
+
+from __future__ import annotations
+
+import math
+import multiprocessing
+import os
+import time
+from collections.abc import Callable
+from concurrent.futures import Future, ProcessPoolExecutor
+from concurrent.futures.process import BrokenProcessPool
+
+from tampcli.bnb.parallel import SkeletonJob, SkeletonRun, run_skeleton
+
+# build(*args, deadline) -> (evaluate, operators by name, is_geometric); `deadline`
+# is a perf_counter time of the worker's own.
+Build = Callable[..., tuple]
+
+
+class SkeletonPool:
+    """`jobs` spawned workers, each set up by `build(*args, deadline)`; the solve's
+    `deadline` (a perf_counter time in this process) bounds their NLPs too. Use as
+    a context manager: on exit, work not started is cancelled and running workers
+    are ended."""
+
+    def __init__(self, build: Build, args: tuple, jobs: int, deadline: float):
+        self._context = multiprocessing.get_context("spawn")
+        # The incumbent's objective, read by every worker (run_skeleton's `incumbent`).
+        self._best = self._context.RawValue("d", math.inf)
+        # perf_counter is per process: workers get the deadline on the wall clock.
+        self._init = (build, args, time.time() + (deadline - time.perf_counter()), self._best)
+        self._jobs = jobs
+        self._executor: ProcessPoolExecutor | None = None
+
+    def __enter__(self) -> SkeletonPool:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def submit(self, job: SkeletonJob) -> Future:
+        """The skeleton's SkeletonRun, to come; a dead worker's skeletons fail (their
+        futures raise) and the next ones go to fresh workers."""
+        try:
+            return self._pool().submit(_run, job)
+        except BrokenProcessPool:
+            self.close()
+            return self._pool().submit(_run, job)
+
+    def improved(self, objective: float) -> None:
+        self._best.value = objective
+
+    def _pool(self) -> ProcessPoolExecutor:
+        if self._executor is None:
+            self._executor = ProcessPoolExecutor(
+                self._jobs, mp_context=self._context, initializer=_start, initargs=self._init)
+        return self._executor
+
+    def close(self) -> None:
+        if self._executor is None:
+            return
+        # Python 3.11 has no public way to end a running worker (3.14's
+        # terminate_workers): one still busy with a skeleton nobody waits for
+        # would hold the solve's exit for as long as its NLP runs.
+        processes = list(getattr(self._executor, "_processes", {}).values())
+        self._executor.shutdown(wait=False, cancel_futures=True)
+        for process in processes:
+            if process.is_alive():
+                process.terminate()
+        for process in processes:
+            process.join(timeout=5)
+        self._executor = None
+
+
+class _Worker:
+    def __init__(self, build: Build, args: tuple, deadline: float, best):
+        local_deadline = time.perf_counter() + (deadline - time.time())
+        self.evaluate, self.ops, self.is_geometric = build(*args, local_deadline)
+        self.best = best
+
+    def run(self, job: SkeletonJob) -> SkeletonRun:
+        ops = tuple(self.ops[name] for name in job.names)
+        return run_skeleton(job, ops, self.evaluate, self.is_geometric, lambda: self.best.value)
+
+
+# The one piece of state of a worker process: built by the pool's initializer,
+# used by every task the process runs (a pool task cannot carry a World).
+_worker: list[_Worker] = []
+
+
+def _start(build: Build, args: tuple, deadline: float, best) -> None:
+    null = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(null, 1)
+    os.dup2(null, 2)
+    _worker.append(_Worker(build, args, deadline, best))
+
+
+def _run(job: SkeletonJob) -> SkeletonRun:
+    return _worker[0].run(job)

@@ -1,0 +1,177 @@
+"""Branch and bound with skeletons evaluated concurrently (bnb/parallel.py), on toy
+skeletons and evaluators run in a thread pool: the books must come out as the
+serial search's, whatever order the evaluations finish in."""
+
+import math
+import random
+import threading
+import time
+from concurrent.futures import ThreadPoolExecutor
+
+import pytest
+
+from tampcli.bnb import BnBOptions, branch_and_bound
+from tampcli.bnb.parallel import parallel_branch_and_bound, run_skeleton
+
+from .test_bnb import R, Source, table_evaluator
+
+PLANS = [
+    (("a", "b"), 2.0),
+    (("c", "d"), 2.0),
+    (("c", "e", "f"), 3.0),
+    (("i", "j", "k"), 3.0),
+    (("a", "g", "h"), 3.0),
+    (("l", "m", "n", "o"), 4.0),
+]
+# ("a", "b") fails at its keyframes, its prefix ("a",) with it; ("c", ...) costs 1.5
+# on the path, ("i", "j", "k") 0.2: the best once the symbolic weight is counted.
+TABLE = {
+    (("a",), "keyframes"): R("infeasible", worst_constraint="a blocked"),
+    (("c",), "path"): R("solved", 1.5),
+    (("c",), "keyframes"): R("solved", 1.0),
+    (("i", "j", "k"), "path"): R("solved", 0.2),
+    (("i", "j", "k"), "keyframes"): R("solved", 0.1),
+}
+
+
+class _Threads:
+    """Workers: a thread pool that runs whole skeletons, as a worker process does;
+    `delays` (seconds by skeleton) scrambles the order results come back in."""
+
+    def __init__(self, evaluate, workers, delays=None):
+        self.pool, self.evaluate, self.delays = ThreadPoolExecutor(workers), evaluate, delays
+        self.best = math.inf
+
+    def submit(self, job):
+        def run():
+            time.sleep((self.delays or {}).get(job.names, 0.0))
+            ops = tuple(type("Op", (), {"name": n})() for n in job.names)
+            return run_skeleton(job, ops, self.evaluate, lambda op: True, lambda: self.best)
+
+        return self.pool.submit(run)
+
+    def improved(self, objective):
+        self.best = objective
+
+
+def _parallel(plans, table, workers, delays=None, **options):
+    evaluate = table_evaluator(table)
+    threads = _Threads(evaluate, workers, delays)
+    try:
+        return parallel_branch_and_bound(Source(plans), threads, evaluate,
+                                         BnBOptions(jobs=workers, **options))
+    finally:
+        threads.pool.shutdown(wait=False, cancel_futures=True)
+
+
+def _books(result):
+    return [(r.rank, r.plan, r.outcome, r.stage, r.nlp_cost, r.reason) for r in result.skeletons]
+
+
+@pytest.mark.parametrize("workers", [2, 3, 6])
+def test_same_answer_as_the_serial_search(workers):
+    serial = branch_and_bound(Source(PLANS), table_evaluator(TABLE), BnBOptions())
+    parallel = _parallel(PLANS, TABLE, workers)
+    assert serial.status == parallel.status == "solved"
+    assert [op.name for op in parallel.best_plan] == [op.name for op in serial.best_plan] \
+        == ["i", "j", "k"]
+    assert parallel.best_objective == pytest.approx(serial.best_objective, abs=1e-12)
+    # 2 * workers out at once: from 3 workers, #5 ("a", "g", "h") is drawn before
+    # ("a",) is known infeasible, and its own failure is one heuristic prune more.
+    assert parallel.stats["stop"].split(" (")[0] == serial.stats["stop"].split(" (")[0]
+    # #1's infeasible prefix is forbidden; a skeleton drawn before that was known fails.
+    assert all(r.outcome == "infeasible" for r in parallel.skeletons if r.plan[0] == "a")
+    assert (("a", "g", "h") in [r.plan for r in parallel.skeletons]) == (workers >= 3)
+
+
+def test_the_books_do_not_depend_on_which_worker_finishes_first():
+    rng = random.Random(3)
+    reference = _books(_parallel(PLANS, TABLE, 3))
+    for _ in range(3):
+        delays = {names: rng.uniform(0.0, 0.05) for names, _ in PLANS}
+        assert _books(_parallel(PLANS, TABLE, 3, delays)) == reference
+
+
+def test_a_failing_evaluation_is_that_skeleton_failed_and_the_search_goes_on():
+    def evaluate(ops, stage, warm):
+        if ops[0].name == "c":
+            raise RuntimeError("the simulator fell over")
+        return table_evaluator(TABLE)(ops, stage, warm)
+
+    threads = _Threads(evaluate, 2)
+    try:
+        result = parallel_branch_and_bound(Source(PLANS), threads, evaluate, BnBOptions(jobs=2))
+    finally:
+        threads.pool.shutdown(wait=False)
+    assert result.status == "solved"
+    assert [op.name for op in result.best_plan] == ["i", "j", "k"]
+    failed = [r for r in result.skeletons if r.plan[0] == "c"]
+    assert failed and all(r.outcome == "infeasible" for r in failed)
+    assert all("worker failed: RuntimeError: the simulator fell over" in r.reason
+               for r in failed)
+    assert result.stats["heuristic_prunes"] >= len(failed)  # they may hide a better answer
+
+
+def test_the_time_limit_cancels_what_is_out():
+    release = threading.Event()
+
+    def slow(ops, stage, warm):
+        release.wait(5.0)
+        return R("solved", 1.0)
+
+    threads = _Threads(slow, 2)
+    started = time.perf_counter()
+    try:
+        result = parallel_branch_and_bound(Source(PLANS), threads, slow,
+                                           BnBOptions(jobs=2, time_limit=0.3))
+    finally:
+        release.set()
+        threads.pool.shutdown(wait=False, cancel_futures=True)
+    assert time.perf_counter() - started < 2.0
+    assert result.status == "limit" and result.stats["stop"] == "time limit"
+    assert [r.outcome for r in result.skeletons] == ["not reached"] * 4  # 2 * jobs out
+    assert all(r.reason == "cancelled: time" for r in result.skeletons)
+    assert result.lower_bound is not None and result.lower_bound <= 0.2 + 1e-12
+
+
+def test_first_stops_at_the_first_solution():
+    result = _parallel(PLANS, TABLE, 2, first=True)
+    assert result.status == "solved" and result.stats["stop"] == "first solution"
+    assert [op.name for op in result.best_plan] == ["c", "d"]
+
+
+def test_jobs_is_checked():
+    from tampcli.errors import OptionError
+
+    for bad in (0, -1, 1.5, True):
+        with pytest.raises(OptionError, match="jobs"):
+            BnBOptions(jobs=bad)
+
+
+class _Deaf(_Threads):
+    """Workers that never hear of a new incumbent."""
+
+    def improved(self, objective):
+        pass
+
+
+def test_a_new_incumbent_spares_the_path_stage_of_a_skeleton_out_and_changes_no_book():
+    plans = [(("c", "d"), 2.0), (("x", "y"), 2.0)]
+    table = {(("c",), "keyframes"): R("solved", 1.0), (("c",), "path"): R("solved", 1.5),
+             (("x",), "keyframes"): R("solved", 2.0), (("x",), "path"): R("solved", 2.5)}
+    books, paths = [], []
+    for kind in (_Threads, _Deaf):
+        calls = []
+        evaluate = table_evaluator(table, calls)
+        # ("x", "y") starts once ("c", "d") is taken: its keyframe bound 2.2 is above 1.7.
+        threads = kind(evaluate, 2, delays={("x", "y"): 0.3})
+        try:
+            result = parallel_branch_and_bound(Source(plans), threads, evaluate,
+                                               BnBOptions(jobs=2))
+        finally:
+            threads.pool.shutdown(wait=False)
+        books.append(_books(result))
+        paths.append([names for names, stage in calls if stage == "path"])
+    assert books[0] == books[1]
+    assert books[0][1][2:4] == ("pruned", "keyframes")
+    assert paths == [[("c", "d")], [("c", "d"), ("x", "y")]]

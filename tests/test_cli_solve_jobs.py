@@ -1,0 +1,66 @@
+"""`tampcli solve --jobs N`: skeletons solved in worker processes give the serial
+answer; a bad N is a usage error; a worker that dies is reported, not a traceback."""
+
+import json
+import multiprocessing
+import threading
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+DOMAINS, PROBLEMS = ROOT / "domains", ROOT / "problems"
+
+
+def _solve(cli, tmp_path, domain, problem, *flags):
+    out = tmp_path / f"{domain}-{problem}-{'-'.join(flags)}.json"
+    run = cli("solve", "--out", out, *flags, DOMAINS / domain / "domain.pddl",
+              PROBLEMS / domain / f"{problem}.pddl")
+    return run, out
+
+
+@pytest.mark.parametrize("domain", ["planar-tamp", "arm-pick-place"])
+def test_two_jobs_give_the_serial_answer(cli, tmp_path, domain):
+    serial, serial_out = _solve(cli, tmp_path, domain, "p01", "--jobs", "1")
+    parallel, parallel_out = _solve(cli, tmp_path, domain, "p01", "--jobs", "2")
+    assert serial.code == parallel.code == 0, parallel.err
+    one, two = (json.loads(p.read_text()) for p in (serial_out, parallel_out))
+    assert two["plan"] == one["plan"]
+    assert two["objective"] == pytest.approx(one["objective"], abs=1e-6)
+    assert "Traceback" not in parallel.err
+    check = cli("validate", DOMAINS / domain / "domain.pddl",
+                PROBLEMS / domain / "p01.pddl", parallel_out)
+    assert check.code == 0, check.out + check.err
+
+
+@pytest.mark.parametrize("bad", ["0", "-1"])
+def test_a_bad_job_count_is_a_usage_error(cli, tmp_path, bad):
+    run, out = _solve(cli, tmp_path, "planar-tamp", "p01", "--jobs", bad)
+    assert run.code == 2
+    assert f"--jobs: must be an integer >= 1, got {bad}" in run.err
+    assert not out.exists()
+
+
+def test_a_worker_killed_mid_solve_is_reported_and_the_search_goes_on(cli, tmp_path):
+    """arm-sort's skeletons take seconds each: its workers are killed while they
+    solve the first two; those fail with the reason, fresh workers take the rest."""
+
+    def kill_workers():
+        for child in multiprocessing.active_children():
+            child.kill()
+
+    timer = threading.Timer(4.0, kill_workers)
+    timer.start()
+    try:
+        run, out = _solve(cli, tmp_path, "arm-sort", "p01", "--jobs", "2", "-k", "3",
+                          "--time-limit", "60")
+    finally:
+        timer.cancel()
+    assert run.code in (0, 1), run.err
+    assert "Traceback" not in run.err + run.out
+    sol = json.loads(out.read_text())
+    killed = [s for s in sol["skeletons"] if "worker failed" in (s["reason"] or "")]
+    assert killed and all(s["outcome"] == "infeasible" for s in killed)
+    assert all("BrokenProcessPool" in s["reason"] for s in killed)
+    assert "worker failed" in run.err  # the skeleton table says why
+    assert len(sol["skeletons"]) == 3
