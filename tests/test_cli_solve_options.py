@@ -5,7 +5,6 @@ import argparse
 import dataclasses
 import json
 import math
-import os
 from pathlib import Path
 
 import pytest
@@ -39,10 +38,6 @@ def _parse(add_parser, *argv):
 @pytest.mark.parametrize("flag", solve_cli.FLAGS, ids=[f.name for f in solve_cli.FLAGS])
 def test_each_solve_flag_defaults_to_its_options_field(flag):
     p, _ = _parse(solve_cli.add_parser, "d.pddl", "p.pddl")
-    if flag.cli_default is not None:  # --jobs: the cores; the library's stays 1 (serial)
-        assert p.get_default(flag.field) == flag.cli_default() == (os.cpu_count() or 1)
-        assert default_of(BnBOptions, flag.field) == 1
-        return
     stage = {"bnb": BnBOptions, "optimize": OptimizeOptions}[flag.stage]
     assert p.get_default(flag.field) == default_of(stage, flag.field)
     assert p.get_default(flag.field) == getattr(getattr(SolveOptions(), flag.stage), flag.field)
@@ -50,8 +45,7 @@ def test_each_solve_flag_defaults_to_its_options_field(flag):
 
 def test_solve_without_flags_gets_the_default_options():
     _, args = _parse(solve_cli.add_parser, "d.pddl", "p.pddl")
-    cores = os.cpu_count() or 1
-    assert solve_cli.options_from_args(args) == SolveOptions(bnb=BnBOptions(jobs=cores))
+    assert solve_cli.options_from_args(args) == SolveOptions()
 
 
 def test_solve_flags_reach_their_stage():

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import os
-from collections.abc import Callable
 from contextlib import ExitStack
 from dataclasses import dataclass
 
@@ -34,14 +32,9 @@ class Flag:
     help: str
     short: str | None = None
     choices: tuple[str, ...] | None = None
-    # The command line's own default, where the library's would not do (the
-    # library solves in one process unless asked; the command uses the cores).
-    cli_default: Callable[[], object] | None = None
 
     @property
     def default(self):
-        if self.cli_default is not None:
-            return self.cli_default()
         # A dataclass keeps each plain field default as a class attribute.
         return getattr(_STAGES[self.stage], self.field)
 
@@ -62,8 +55,9 @@ FLAGS = (
          "'tampcli[ipopt]'), or auto (Ipopt for the large ones where it is installed; "
          "docs/ipopt.md)", choices=tuple(BACKENDS)),
     Flag("--jobs", "bnb", "jobs", int, "N",
-         "skeletons solved at once, one worker process each (the default: one per core); "
-         "1: in this process", short="-j", cli_default=lambda: os.cpu_count() or 1),
+         "skeletons solved at once, one worker process each; 1: in this process (the "
+         "default: bench/results/parallel.md measured no gain on a shared 2-core machine, "
+         "and a worker's start costs about a second)", short="-j"),
 )
 
 
