@@ -23,6 +23,7 @@ from tampcli.geometry.narrow import (
     Placed,
     checked,
     fcl_distance,
+    no_fcl,
     signed_distance,
 )
 from tampcli.geometry.parts import Part
@@ -212,7 +213,7 @@ class Batch:
                     closed[t] = True
                     dist[t], p1[t], p2[t], _ = exact
                     continue
-            raw = fcl_distance(request, a, pa.obj, b, pb_.obj)
+            raw = None if no_fcl(a, b) else fcl_distance(request, a, pa.obj, b, pb_.obj)
             raws.append(raw)
             if raw is None:
                 dist[t] = -math.inf

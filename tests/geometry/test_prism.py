@@ -73,3 +73,22 @@ def test_a_block_against_a_wall_that_aborts_fcl_is_answered():
     assert d == pytest.approx(-0.025, abs=1e-8)  # the block's 2.5 cm into the wall's end
     np.testing.assert_allclose(n, [0.0, -1.0, 0.0], atol=1e-9)
     np.testing.assert_allclose(pb - pa, d * n, atol=1e-12)
+
+
+def test_two_coincident_tilted_cubes_are_answered_without_fcl():
+    # blind2 p02: FCL's signed distance aborted the process on a carried cube and its
+    # copy at one tilted pose; box pairs take our own GJK and penetration path.
+    import fcl
+
+    from tampcli.geometry.narrow import no_fcl, signed_distance
+
+    pose = transforms.pose(transforms.rot_z(0.4) @ np.array(
+        [[1.0, 0.0, 0.0], [0.0, 0.6, -0.8], [0.0, 0.8, 0.6]]), (-0.175, -0.012, 0.413))
+    cube = primitive("box", (0.05, 0.05, 0.05))
+    a, b = Placed(cube, pose), Placed(cube, pose.copy())
+    assert no_fcl(a, b)
+    request = fcl.DistanceRequest(enable_nearest_points=True, enable_signed_distance=True)
+    objects = [fcl.CollisionObject(fcl.Box(0.05, 0.05, 0.05)) for _ in range(2)]
+    d, pa, pb, n = signed_distance(request, a, objects[0], b, objects[1])
+    assert d == pytest.approx(-0.05, abs=1e-6)  # a full width deep, either way out
+    np.testing.assert_allclose(np.linalg.norm(n), 1.0)
