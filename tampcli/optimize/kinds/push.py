@@ -46,6 +46,7 @@ from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
 MEASURE_LIMIT = 0.01  # m: the measured touch corrects the nominal reach by at most this
+GRAZE = 0.005  # m: a guessed hand this deep in something is only grazing it
 
 
 def _clear_at_both_ends(walk, step, obj_pose, end, choices):
@@ -66,10 +67,10 @@ def _clear_at_both_ends(walk, step, obj_pose, end, choices):
             unreachable |= res > walk.IK_TOLERANCE
             if checker is not None:
                 poses = {**walk.poses, step.obj: pose}
-                # In something, not merely near it: the IK solution of a level hand
-                # hugs the table within a millimetre; the NLP moves it off.
+                # In something, not merely grazing it: the IK solution of a level hand
+                # hugs the table within a millimetre (the NLP moves it off).
                 clashes += checker.min_distance(q, poses, None, frozenset({step.obj}),
-                                                static=False, horizon=0.0) < 0.0
+                                                static=False, horizon=0.0) < -GRAZE
         score = (unreachable, clashes, float(np.linalg.norm(first - q_prev)))
         if best is None or score < best[0]:
             best = (score, first, c)
