@@ -14,7 +14,6 @@ from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
 from tampcli.optimize.init import keyframe_guess
 from tampcli.optimize.layout import grip_block, keyframe_block
-from tampcli.optimize.nlp import FEASIBILITY, violation_at
 from tampcli.optimize.result import TrajectoryResult
 from tampcli.optimize.run import Run
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
@@ -210,9 +209,11 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
 
 
 def _tight_keyframes(run: Run, layout, bounds, out, choices):
-    """The keyframe NLP again with `tight_margin`, from where it failed, when the
-    margin is part of what it violates there (a slot narrower than twice the
-    margin); else, or when that fails too, `out`."""
+    """The keyframe NLP again with `tight_margin`, from where it failed; `out` when
+    that fails too. Whatever the row it failed on: a margin row held at the margin
+    can block another (blind2 p07: a level hand 1 cm short of the garage region,
+    held off the roof's edge), and the margin must never turn a feasible problem
+    infeasible."""
     problem = run.problem
     opts = problem.options
     if opts.tight_margin >= opts.margin:
@@ -224,8 +225,6 @@ def _tight_keyframes(run: Run, layout, bounds, out, choices):
         return keyframe_rows(tight, layout.unpack(x), choices, run.kin, run.checker, run.start,
                              anchors=run.anchors)
 
-    if violation_at(evaluate, layout, out.x) >= out.violation - FEASIBILITY:
-        return out
     retry = run.nlp(evaluate, layout, out.x, bounds)
     return retry if retry.status == "solved" or retry.violation < out.violation else out
 
