@@ -46,20 +46,20 @@ from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
 MEASURE_LIMIT = 0.01  # m: the measured touch corrects the nominal reach by at most this
-GRAZE = 0.005  # m: a guessed hand this deep in something is only grazing it
 
 
 def _clear_at_both_ends(walk, step, obj_pose, end, choices):
-    """(start keyframe, choice) of the first contact choice whose hand is reachable and
-    clear both where the push starts and where it ends: a top-down hand clear at the
-    start can end in a low roof the object is pushed under (a level hand passes)."""
+    """(start keyframe, choice) of the contact whose hand is reachable, and least deep
+    in anything where the push starts and where it ends (then the nearest): a
+    top-down hand clear at the start can end in a low roof the object is pushed
+    under (a level hand passes)."""
     problem = walk.problem
     checker = problem.checker
     q_prev, best = walk.q_prev, None
     for c in choices:
         G = transforms.pose_inverse(face_grip(problem, step, c).matrix(0.0))
         walk.q_prev = q_prev
-        unreachable, clashes, first = False, 0, None
+        unreachable, depth, first = False, 0.0, None
         for pose in (obj_pose, end):
             q, res = walk.solve_ik(pose @ G)
             walk.q_prev = q
@@ -67,11 +67,12 @@ def _clear_at_both_ends(walk, step, obj_pose, end, choices):
             unreachable |= res > walk.IK_TOLERANCE
             if checker is not None:
                 poses = {**walk.poses, step.obj: pose}
-                # In something, not merely grazing it: the IK solution of a level hand
-                # hugs the table within a millimetre (the NLP moves it off).
-                clashes += checker.min_distance(q, poses, None, frozenset({step.obj}),
-                                                static=False, horizon=0.0) < -GRAZE
-        score = (unreachable, clashes, float(np.linalg.norm(first - q_prev)))
+                # How deep in something, to the millimetre: the IK solution of a level
+                # hand hugs the table by a fraction of one (the NLP moves it off).
+                d = checker.min_distance(q, poses, None, frozenset({step.obj}),
+                                         static=False, horizon=0.0)
+                depth += max(0.0, -d)
+        score = (unreachable, round(depth, 3), float(np.linalg.norm(first - q_prev)))
         if best is None or score < best[0]:
             best = (score, first, c)
     walk.q_prev = q_prev
