@@ -23,14 +23,12 @@ import time
 
 import numpy as np
 
-from tampcli.optimize.kkt import certificate
 from tampcli.optimize.nlp import (
     FEASIBILITY,
-    STALL_GAIN,
-    STALL_ITERATIONS,
-    STALL_PENALTY,
+    BestPoint,
     NlpOutcome,
     _Evaluator,
+    outcome_at,
     violation_of,
 )
 
@@ -69,38 +67,6 @@ def missing() -> str | None:
     return None
 
 
-class _Best:
-    """The best point so far (least violation beyond FEASIBILITY, then least cost)
-    and the iteration it last improved at: the stall test of nlp.solve_nlp."""
-
-    def __init__(self, ev: _Evaluator, x0: np.ndarray):
-        self.ev = ev
-        self.x = x0.copy()
-        self.key = (np.inf, np.inf)
-        self.merit = np.inf
-        self.progress = 0
-        self.iterations = 0
-
-    def track(self, x) -> None:
-        cost, _, eq, _, ineq, _, _, _ = self.ev(x)
-        v = violation_of(eq, ineq)[0]
-        key = (max(v - FEASIBILITY, 0.0), cost)
-        if key < self.key:
-            bv, bc = self.key
-            if key[0] < 0.99 * bv or (key[0] == 0 and (bv > 0 or key[1] < bc - 1e-6 * (1 + abs(bc)))):
-                self.progress = self.iterations
-            self.x, self.key = np.array(x, copy=True), key
-        merit = cost + STALL_PENALTY * max(v - FEASIBILITY, 0.0)
-        if not np.isfinite(self.merit) or \
-                merit < self.merit - STALL_GAIN * (1.0 + abs(self.merit)):
-            self.merit = merit
-            self.progress = self.iterations
-
-    @property
-    def stalled(self) -> bool:
-        return self.iterations - self.progress > STALL_ITERATIONS
-
-
 class _Kept:
     """evaluate(x) that keeps the Rows it last returned."""
 
@@ -136,7 +102,7 @@ class _Callbacks:
     (cyipopt does not pass on every exception raised in a callback).
     """
 
-    def __init__(self, ev: _Evaluator, kept: _Kept, best: _Best, deadline: float):
+    def __init__(self, ev: _Evaluator, kept: _Kept, best: BestPoint, deadline: float):
         self.ev, self.kept, self.best, self.deadline = ev, kept, best, deadline
         rows = kept.rows
         self.jac_mask = np.vstack([rows.eq.pattern(ev.slices, ev.nx),
@@ -206,7 +172,7 @@ def solve_ipopt(evaluate, layout, x0, bounds, max_iterations: int, deadline: flo
     x0 = np.clip(np.asarray(x0, dtype=float), lo, hi)
     _, _, eq0, _, ineq0, _, _, _ = ev(x0)
     m_eq, m = len(eq0), len(eq0) + len(ineq0)
-    best = _Best(ev, x0)
+    best = BestPoint(ev, x0)
     best.track(x0)
     calls = _Callbacks(ev, kept, best, deadline)
     problem = cyipopt.Problem(
@@ -233,26 +199,9 @@ def solve_ipopt(evaluate, layout, x0, bounds, max_iterations: int, deadline: flo
         best.track(x)
     message = info["status_msg"]
     message = message.decode() if isinstance(message, bytes) else str(message)
-    return _outcome(ev, best.x, reason, best.iterations, message, bounds)
+    return outcome_at(ev, best.x, reason, best.iterations, message, bounds)
 
 
 def _violation(ev, x) -> float:
     out = ev(x)
     return violation_of(out[2], out[4])[0]
-
-
-def _outcome(ev, x, reason, iterations, message, bounds) -> NlpOutcome:
-    cost, grad, eq, jeq, ineq, jin, leq, lin = ev(x)
-    v, i, kind = violation_of(eq, ineq)
-    if v <= FEASIBILITY:
-        status, worst = "solved", None
-    else:
-        status = "limit" if reason in ("time", "iterations") else "infeasible"
-        value = eq[i] if kind == "eq" else ineq[i]
-        worst = (leq if kind == "eq" else lin)[i].words(value)
-    # The same certificate as SLSQP's answers (optimize/kkt.py: multipliers fitted at
-    # the point), so the two backends' certificates read alike.
-    kkt = certificate(grad, eq, jeq, ineq, jin, leq, lin, x, bounds, ev.slices) \
-        if status == "solved" else None
-    return NlpOutcome(x=x, status=status, cost=float(cost), violation=v, worst=worst,
-                      iterations=iterations, kkt=kkt, message=message, stopped=reason)

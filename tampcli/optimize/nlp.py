@@ -88,42 +88,74 @@ def nlp_feasible(evaluate, layout, x) -> bool:
     return violation_at(evaluate, layout, x) <= FEASIBILITY
 
 
-def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float,
-              ftol: float = 1e-6) -> NlpOutcome:
-    ev = _Evaluator(evaluate, layout)
-    x0 = np.clip(np.asarray(x0, dtype=float), [b[0] for b in bounds], [b[1] for b in bounds])
-    history: list = []  # one entry per SLSQP iteration
-    best = {"x": x0.copy(), "key": (np.inf, np.inf), "progress": 0, "merit": np.inf}
+class BestPoint:
+    """The best point so far (least violation beyond FEASIBILITY, then least cost)
+    and the iteration it last improved at: the stall test of every backend.
+    `iterations` is set by the caller (the backend's own count)."""
 
-    def track(x):
-        cost, _, eq, _, ineq, _, _, _ = ev(x)
+    def __init__(self, ev: _Evaluator, x0: np.ndarray):
+        self.ev = ev
+        self.x = x0.copy()
+        self.key = (np.inf, np.inf)
+        self.merit = np.inf
+        self.progress = 0
+        self.iterations = 0
+
+    def track(self, x) -> None:
+        cost, _, eq, _, ineq, _, _, _ = self.ev(x)
         v = violation_of(eq, ineq)[0]
         key = (max(v - FEASIBILITY, 0.0), cost)
-        if key < best["key"]:
-            (bv, bc) = best["key"]
+        if key < self.key:
+            bv, bc = self.key
             if key[0] < 0.99 * bv or (key[0] == 0 and (bv > 0 or key[1] < bc - 1e-6 * (1 + abs(bc)))):
-                best["progress"] = len(history)
-            best["x"], best["key"] = np.array(x, copy=True), key
+                self.progress = self.iterations
+            self.x, self.key = np.array(x, copy=True), key
         # Iterates often approach a much cheaper optimum slightly outside the
         # feasibility tolerance (measured on arm-kitchen's keyframes: cost 0.33 at
         # violations of 1e-4..1e-3 while the best feasible point costs 1.3); a
         # falling merit is progress too, so the stall test does not cut them off.
         merit = cost + STALL_PENALTY * max(v - FEASIBILITY, 0.0)
-        if not np.isfinite(best["merit"]) or \
-                merit < best["merit"] - STALL_GAIN * (1.0 + abs(best["merit"])):
-            best["merit"] = merit
-            best["progress"] = len(history)
-        return v
+        if not np.isfinite(self.merit) or \
+                merit < self.merit - STALL_GAIN * (1.0 + abs(self.merit)):
+            self.merit = merit
+            self.progress = self.iterations
+
+    @property
+    def stalled(self) -> bool:
+        return self.iterations - self.progress > STALL_ITERATIONS
+
+
+def outcome_at(ev: _Evaluator, x, reason, iterations: int, message: str, bounds) -> NlpOutcome:
+    """The NlpOutcome of a backend's answer x: solved within FEASIBILITY (with its KKT
+    certificate), else the worst row in words."""
+    cost, grad, eq, jeq, ineq, jin, leq, lin = ev(x)
+    v, i, kind = violation_of(eq, ineq)
+    if v <= FEASIBILITY:
+        status, worst = "solved", None
+    else:
+        status = "limit" if reason in ("time", "iterations") else "infeasible"
+        value = eq[i] if kind == "eq" else ineq[i]
+        worst = (leq if kind == "eq" else lin)[i].words(value)
+    kkt = certificate(grad, eq, jeq, ineq, jin, leq, lin, x, bounds, ev.slices) \
+        if status == "solved" else None
+    return NlpOutcome(x, status, float(cost), v, worst, iterations, kkt, message, reason)
+
+
+def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float,
+              ftol: float = 1e-6) -> NlpOutcome:
+    ev = _Evaluator(evaluate, layout)
+    x0 = np.clip(np.asarray(x0, dtype=float), [b[0] for b in bounds], [b[1] for b in bounds])
+    best = BestPoint(ev, x0)
 
     def callback(xk):
-        track(xk)
-        history.append(None)
+        best.track(xk)
+        best.iterations += 1
         if time.perf_counter() > deadline:
             raise _Stop("time")
         # SLSQP can wander (collision rows are only piecewise smooth): stop when the
         # best point (least violation, then least cost) has not really improved for
         # a while. An infeasible skeleton is found out this way, not at the cap.
-        if len(history) - best["progress"] > STALL_ITERATIONS:
+        if best.stalled:
             raise _Stop("stall")
 
     constraints = []
@@ -133,7 +165,7 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
     if len(ineq0):
         constraints.append({"type": "ineq", "fun": lambda x: ev(x)[4],
                             "jac": lambda x: ev(x)[5]})
-    track(x0)
+    best.track(x0)
     reason = None
     iterations = 0
     try:
@@ -142,26 +174,13 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
             res = minimize(lambda x: ev(x)[0], x0, jac=lambda x: ev(x)[1], method="SLSQP",
                            bounds=bounds, constraints=constraints, callback=callback,
                            options={"maxiter": max_iterations, "ftol": ftol})
-        iterations = int(res.get("nit", len(history)))
-        track(res.x)
+        iterations = int(res.get("nit", best.iterations))
+        best.track(res.x)
         message = str(res.message)
         if res.status == 9:
             reason = "iterations"
     except _Stop as stop:
         reason = str(stop)
-        iterations = len(history)
+        iterations = best.iterations
         message = f"stopped: {reason}"
-    x = best["x"]
-    cost, grad, eq, jeq, ineq, jin, leq, lin = ev(x)
-    v, i, kind = violation_of(eq, ineq)
-    if v <= FEASIBILITY:
-        status = "solved"
-        worst = None
-    else:
-        status = "limit" if reason in ("time", "iterations") else "infeasible"
-        value = eq[i] if kind == "eq" else ineq[i]
-        worst = (leq if kind == "eq" else lin)[i].words(value)
-    kkt = certificate(grad, eq, jeq, ineq, jin, leq, lin, x, bounds, ev.slices) \
-        if status == "solved" else None
-    return NlpOutcome(x, status, float(cost), v, worst, iterations, kkt, message, reason)
-
+    return outcome_at(ev, best.x, reason, iterations, message, bounds)
