@@ -278,16 +278,22 @@ class _Search:
             result = self._stage(trial.ops, stage, warm)
             if stage == "keyframes":
                 self.tree.put(trial.names, result)
-            if result.status != "solved":
-                self._stage_failed(trial, stage, result)
+            if not self._apply_stage(trial, stage, result):
                 return
             warm = result
-            trial.kkt = getattr(result, "kkt", None) or trial.kkt
-            if stage == "keyframes" and result.cost is not None \
-                    and self._keyframe_bound_prunes(trial, result.cost):
-                return
-            if stage == "path":
-                trial.path_result, trial.nlp_cost = result, result.cost
+
+    def _apply_stage(self, trial: _Trial, stage: str, result) -> bool:
+        """One stage's result into the trial; False when the trial ends there."""
+        if result.status != "solved":
+            self._stage_failed(trial, stage, result)
+            return False
+        trial.kkt = getattr(result, "kkt", None) or trial.kkt
+        if stage == "keyframes" and result.cost is not None \
+                and self._keyframe_bound_prunes(trial, result.cost):
+            return False
+        if stage == "path":
+            trial.path_result, trial.nlp_cost = result, result.cost
+        return True
 
     def _stage_failed(self, trial: _Trial, stage: str, result) -> None:
         trial.outcome = "infeasible"

@@ -215,15 +215,8 @@ class _ParallelSearch(_Search):
             self.tree.put(prefix, result)
         for stage, result in run.stages:
             trial.reached = stage
-            if result.status != "solved":
-                self._stage_failed(trial, stage, result)
+            if not self._apply_stage(trial, stage, result):
                 break
-            trial.kkt = getattr(result, "kkt", None) or trial.kkt
-            if stage == "keyframes" and result.cost is not None \
-                    and self._keyframe_bound_prunes(trial, result.cost):
-                break
-            if stage == "path":
-                trial.path_result, trial.nlp_cost = result, result.cost
         self._record(trial)
 
     def _record(self, trial: _Trial) -> None:
