@@ -35,7 +35,7 @@ from concurrent.futures import FIRST_COMPLETED, Future, wait
 from dataclasses import dataclass
 from typing import Any, Protocol
 
-from tampcli.bnb import STAGES, _Search, _Trial
+from tampcli.bnb import BOUNDING, STAGES, _Search, _Trial
 from tampcli.bnb.outcome import TIE
 from tampcli.bnb.prefix_bounds import Relax
 from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
@@ -107,12 +107,14 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
         if name == "keyframes":
             tree.put(job.names, result)
         if result.status != "solved":
+            if name == "reach":  # as the serial search: the relaxation decides nothing
+                continue
             if name == "keyframes" and job.prefix_pruning and result.status == "infeasible":
                 shortest_failing_prefix(ops, job.names, tree, stage, is_geometric)
             break
         warm = result
         best = min(math.inf if job.incumbent is None else job.incumbent, incumbent())
-        if name == "keyframes" and result.cost is not None and not job.anytime \
+        if name in BOUNDING and result.cost is not None and not job.anytime \
                 and result.cost + job.weight * job.symbolic >= best:
             break
     known = {prefix for prefix, _ in job.known}

@@ -10,7 +10,7 @@ from tampcli.optimize.values import Keyframes
 from tampcli.solution_kkt import KktStages
 
 STATUSES = ("solved", "infeasible", "limit")
-STAGES = ("final", "keyframes", "path")
+STAGES = ("final", "reach", "keyframes", "path")
 
 
 @dataclass(frozen=True)

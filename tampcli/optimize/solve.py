@@ -1,6 +1,8 @@
 """The SLSQP driver: one skeleton, one stage -> TrajectoryResult.
 
 final     -> one small NLP over the placements (no robot);
+reach     -> the keyframe NLP with collisions dropped: a cheap relaxation whose cost
+             bounds the keyframes' (heuristically: both are local optima);
 keyframes -> the final NLP (for placements), IK keyframes, one NLP over keyframes;
 path      -> keyframes (unless `warm` has them for this skeleton), then one NLP per
              motion phase with its two keyframes fixed; nothing is called solved
@@ -14,7 +16,7 @@ import math
 
 import numpy as np
 
-from tampcli.optimize.keyframe_stage import final, keyframes
+from tampcli.optimize.keyframe_stage import final, keyframes, reach
 from tampcli.optimize.options import OptimizeOptions
 from tampcli.optimize.path_stage import path
 from tampcli.optimize.problem import TrajectoryProblem
@@ -36,6 +38,8 @@ def solve(problem: TrajectoryProblem, stage: str, warm: TrajectoryResult | None 
     try:
         if stage == "final":
             return final(run)
+        if stage == "reach":
+            return reach(run, warm)
         if stage == "keyframes":
             return keyframes(run, warm)
         return path(run, warm)

@@ -48,7 +48,8 @@ class Source:
 
 
 def table_evaluator(table, calls=None):
-    """Evaluate by looking up (names, stage) -> R; default solved with cost 1."""
+    """Evaluate by looking up (names, stage) -> R; default solved with cost 1 (0 for
+    the relaxation "reach", whose bound then prunes nothing)."""
 
     def evaluate(ops, stage, warm):
         names = tuple(op.name for op in ops)
@@ -57,7 +58,7 @@ def table_evaluator(table, calls=None):
         for key, result in table.items():
             if names[:len(key[0])] == key[0] and key[1] == stage:
                 return result
-        return R("solved", 1.0)
+        return R("solved", 0.0 if stage == "reach" else 1.0)
 
     return evaluate
 
@@ -118,6 +119,29 @@ def test_keyframe_bound_prunes_without_path_solve():
     assert res.skeletons[1].outcome == "pruned"
     assert res.skeletons[1].bound_kind == "heuristic"
     assert (("b",), "path") not in calls
+
+
+def test_the_relaxed_keyframe_bound_prunes_before_the_keyframe_nlp():
+    src = Source([(("a",), 1), (("b",), 2)])
+    calls = []
+    ev = table_evaluator({(("a",), "path"): R("solved", 1.0),
+                          (("b",), "reach"): R("solved", 3.0)}, calls)
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert res.skeletons[1].outcome == "pruned"
+    assert res.skeletons[1].stage == "reach"
+    assert res.skeletons[1].bound_kind == "heuristic"  # a local optimum of a relaxation
+    assert "reach (keyframes, no collisions) bound" in res.skeletons[1].reason
+    assert (("b",), "keyframes") not in calls
+
+
+def test_a_failed_relaxation_leaves_the_decision_to_the_keyframe_nlp():
+    src = Source([(("a",), 1)])
+    calls = []
+    ev = table_evaluator({(("a",), "reach"): R("infeasible", worst_constraint="local")},
+                         calls)
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert res.status == "solved"
+    assert [stage for _, stage in calls] == ["final", "reach", "keyframes", "path"]
 
 
 def test_infeasible_prefix_prunes_every_skeleton_sharing_it():

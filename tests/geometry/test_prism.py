@@ -92,3 +92,29 @@ def test_two_coincident_tilted_cubes_are_answered_without_fcl():
     d, pa, pb, n = signed_distance(request, a, objects[0], b, objects[1])
     assert d == pytest.approx(-0.05, abs=1e-6)  # a full width deep, either way out
     np.testing.assert_allclose(np.linalg.norm(n), 1.0)
+
+
+def test_tilted_boxes_apart_along_a_face_normal_take_fcl_and_agree_with_our_gjk():
+    # A held box tilted in a carry, against a table or a basin: FCL's GJK answers
+    # (no EPA runs for separated solids) and its checked answer is our GJK's.
+    import fcl
+
+    from tampcli.geometry.narrow import checked, no_fcl, signed_distance
+
+    rng = np.random.default_rng(3)
+    request = fcl.DistanceRequest(enable_nearest_points=True, enable_signed_distance=True)
+    sent = 0
+    for _ in range(300):
+        sizes = [tuple(rng.uniform(0.02, 0.3, 3)) for _ in range(2)]
+        poses = [transforms.pose(transforms.rot_z(rng.uniform(-3, 3)) @ transforms.rot_x(
+            rng.uniform(-0.5, 0.5)), rng.uniform(-0.2, 0.2, 3)) for _ in range(2)]
+        a, b = (Placed(primitive("box", s), p) for s, p in zip(sizes, poses, strict=True))
+        objects = [fcl.CollisionObject(fcl.Box(*s)) for s in sizes]
+        d, pa, pb, n = signed_distance(request, a, objects[0], b, objects[1])
+        ours = checked(None, a, b)
+        assert d == pytest.approx(ours[0], abs=1e-7)
+        if not no_fcl(a, b):
+            sent += 1
+            assert d > 0
+            np.testing.assert_allclose(pb - pa, d * n, atol=1e-7)
+    assert 50 < sent < 300  # both paths were taken
