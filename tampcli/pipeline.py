@@ -311,11 +311,12 @@ class _Evaluator:
                 domain=self.inputs.domain, checker=self.geometry.checker)
         return self.lowered[names]
 
-    def __call__(self, ops, stage, warm):
+    def __call__(self, ops, stage, warm, cutoff=None):
         remaining = max(self.deadline - time.perf_counter(), 0.5)
         options = self.options if remaining >= self.options.time_limit else \
             dataclasses.replace(self.options, time_limit=remaining)
-        return self.solve_stage(self._lowered(ops), stage, warm=warm, options=options)
+        return self.solve_stage(self._lowered(ops), stage, warm=warm, options=options,
+                                cutoff=cutoff)
 
     def relaxed(self, ops):
         """The prefix's relaxed bound (optimize/relaxed.py), None off the planar robot."""

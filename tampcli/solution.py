@@ -43,7 +43,7 @@ class SkeletonRecord:
     outcome: str  # one of OUTCOMES
     bound: float | None = None
     bound_kind: str | None = None  # "proved" | "heuristic"
-    stage: str | None = None  # deepest stage reached: "final" | "keyframes" | "path"
+    stage: str | None = None  # deepest stage reached: "final" | "reach" | "keyframes" | "path"
     nlp_cost: float | None = None
     total_cost: float | None = None
     seconds: float = 0.0

@@ -1,8 +1,8 @@
 """Branch and bound over ranked skeletons (the seed's §5).
 
 Skeletons arrive lazily from the top-k generator in non-decreasing symbolic
-cost; each is evaluated cheap to expensive (final placements, keyframes, full
-path) and dropped at the first stage that fails. Geometry comes in only as a
+cost; each is evaluated cheap to expensive (final placements, keyframes without
+collisions, keyframes, full path) and dropped at the first stage that fails. Geometry comes in only as a
 callable `evaluate(skeleton, stage, warm)` (toy functions in the tests).
 `prefix_tree.py` keeps keyframe results by prefix (memo, warm starts,
 infeasible prefixes); `prefix_bounds.py` bounds prefix nodes with `relax(ops)`
@@ -24,8 +24,11 @@ Bounds, honestly labelled:
   An infeasibility is proved only when the evaluator says so (`proved`,
   e.g. a region out of reach by a distance argument).
 - heuristic: the keyframe NLP's optimum (a lower bound of the path cost for
-  those keyframes, by Cauchy–Schwarz, but a *local* optimum) prunes a
-  skeleton that cannot beat the incumbent; an NLP that fails to find a
+  those keyframes, by Cauchy–Schwarz, but a *local* optimum), and before it
+  that of its relaxation without collisions ("reach"), prune a skeleton that
+  cannot beat the incumbent; so does the path stage's running bound (motions
+  solved plus the least cost through the remaining keyframes, the keyframes
+  fixed) once it reaches the cutoff the path stage is given; an NLP that fails to find a
   feasible point marks a skeleton (and, at the keyframe stage, the shortest
   failing prefix, which prunes every skeleton sharing it) infeasible.
 `Solution.lower_bound` holds only proved values.
@@ -40,18 +43,15 @@ from typing import Any
 
 from tampcli.bnb.outcome import TIE, explain, heuristic_prunes, stop_label
 from tampcli.bnb.prefix_bounds import PrefixBounds, Relax
-from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
+from tampcli.bnb.prefix_tree import PrefixTree
+from tampcli.bnb.stage_steps import BOUNDING, STAGES, StageSteps
 from tampcli.bnb.values import BnBOptions, BnBResult, Evaluate, Event, SkeletonSource, StageResult
 from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
 
-__all__ = ["BnBOptions", "BnBResult", "Evaluate", "Event", "SkeletonSource", "StageResult",
+__all__ = ["BOUNDING", "STAGES", "BnBOptions", "BnBResult", "Evaluate", "Event", "SkeletonSource", "StageResult",
            "branch_and_bound"]
 
-STAGES = ("final", "reach", "keyframes", "path")
-# Stages whose cost bounds the skeleton's (heuristically: local optima): "reach" is the
-# keyframe NLP with collisions dropped, a relaxation a tenth of the keyframe NLP's time.
-BOUNDING = ("reach", "keyframes")
 
 
 def branch_and_bound(
@@ -106,7 +106,7 @@ class _Trial:
     kkt: KktStages = KktStages()  # of the stages solved so far
 
 
-class _Search:
+class _Search(StageSteps):
     """The state of one branch and bound: incumbent, records, statistics."""
 
     def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock, learn,
@@ -261,77 +261,6 @@ class _Search:
     def _unproved(self, trial: _Trial) -> None:
         self.unproved.append(trial.proved_bound)
         self.unproved_ranks.add(trial.rank)
-
-    def _stage(self, ops, stage: str, warm):
-        t0 = self.clock()
-        result = self.evaluate(ops, stage, warm)
-        self.stats["nlp_solves"] += getattr(result, "nlp_solves", 1) or 1
-        self.stats["nlp_iterations"] += getattr(result, "iterations", 0) or 0
-        self.stats["optimize_seconds"] += self.clock() - t0
-        return result
-
-    def _run_stages(self, trial: _Trial) -> None:
-        """Final placements, the relaxed and the real keyframes, full path: stop at the
-        first that fails or whose bound cannot beat the incumbent."""
-        warm = self.tree.warm_for(trial.names)
-        for stage in STAGES:
-            trial.reached = stage
-            self.emit(Event("stage", trial.rank, trial.names, trial.symbolic, stage=stage,
-                            seconds=self.elapsed()))
-            result = self._stage(trial.ops, stage, warm)
-            if stage == "keyframes":
-                self.tree.put(trial.names, result)
-            if not self._apply_stage(trial, stage, result):
-                return
-            if result.status == "solved":
-                warm = result
-
-    def _apply_stage(self, trial: _Trial, stage: str, result) -> bool:
-        """One stage's result into the trial; False when the trial ends there."""
-        if result.status != "solved":
-            if stage == "reach":  # a relaxation's local failure proves nothing
-                return True
-            self._stage_failed(trial, stage, result)
-            return False
-        trial.kkt = getattr(result, "kkt", None) or trial.kkt
-        if stage in BOUNDING and result.cost is not None \
-                and self._keyframe_bound_prunes(trial, result.cost, stage):
-            return False
-        if stage == "path":
-            trial.path_result, trial.nlp_cost = result, result.cost
-        return True
-
-    def _stage_failed(self, trial: _Trial, stage: str, result) -> None:
-        trial.outcome = "infeasible"
-        self.learn(result)
-        trial.reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
-        if not getattr(result, "proved", False) or result.status == "limit":
-            self.all_proved_infeasible = False
-            self._unproved(trial)
-        if stage == "keyframes" and self.options.prefix_pruning \
-                and result.status == "infeasible":
-            prefix = shortest_failing_prefix(trial.ops, trial.names, self.tree, self._stage,
-                                              self.is_geometric)
-            if prefix is not None and prefix != trial.names \
-                    and hasattr(self.skeletons, "forbid_prefix"):
-                self.skeletons.forbid_prefix(prefix)
-                self.stats["prefixes_forbidden"] += 1
-                trial.reason += f" (prefix {' '.join(prefix)} is infeasible)"
-
-    def _keyframe_bound_prunes(self, trial: _Trial, keyframe_cost: float,
-                               stage: str = "keyframes") -> bool:
-        trial.heuristic_bound = keyframe_cost + self.w * trial.symbolic
-        if (self.incumbent is not None and not self.options.anytime
-                and trial.heuristic_bound >= self.incumbent.objective):
-            trial.outcome = "pruned"
-            what = "keyframe" if stage == "keyframes" else f"{stage} (keyframes, no collisions)"
-            trial.reason = (f"{what} bound {trial.heuristic_bound:.4g} >= incumbent "
-                            f"{self.incumbent.objective:.4g} (heuristic)")
-            self._unproved(trial)
-            return True
-        if stage == "keyframes" and len(trial.names) > len(self.deepest_feasible):
-            self.deepest_feasible = trial.names
-        return False
 
     def _record(self, trial: _Trial) -> None:
         total = None

@@ -94,15 +94,19 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
     for prefix, result in job.known:
         tree.put(prefix, result)
 
-    def stage(prefix_ops, name, warm):
-        result = evaluate(prefix_ops, name, warm)
+    def stage(prefix_ops, name, warm, cutoff=None):
+        result = evaluate(prefix_ops, name, warm) if cutoff is None else \
+            evaluate(prefix_ops, name, warm, cutoff=cutoff)
         counts[0] += getattr(result, "nlp_solves", 1) or 1
         counts[1] += getattr(result, "iterations", 0) or 0
         return result
 
     warm = tree.warm_for(job.names)
     for name in STAGES:
-        result = stage(ops, name, warm)
+        best = min(math.inf if job.incumbent is None else job.incumbent, incumbent())
+        cutoff = best - job.weight * job.symbolic \
+            if name == "path" and math.isfinite(best) and not job.anytime else None
+        result = stage(ops, name, warm, cutoff)
         stages.append((name, result))
         if name == "keyframes":
             tree.put(job.names, result)

@@ -3,7 +3,7 @@ protocol, events for live displays, the result."""
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
@@ -47,7 +47,7 @@ class BnBOptions:
 
 
 class StageResult(Protocol):
-    status: str  # "solved" | "infeasible" | "limit"
+    status: str  # "solved" | "infeasible" | "limit" | "bounded" (reached the cutoff)
     cost: float | None
     worst_constraint: str | None
 
@@ -65,7 +65,10 @@ class SkeletonSource(Protocol):
     def forbid_prefix(self, names: tuple[str, ...]) -> None: ...
 
 
-Evaluate = Callable[[Sequence[Any], str, Any], StageResult]
+# evaluate(ops, stage, warm), and for the path stage once there is an incumbent,
+# evaluate(ops, "path", warm, cutoff=C): C is the trajectory cost at which the
+# skeleton cannot beat the incumbent; the stage may stop there ("bounded").
+Evaluate = Callable[..., StageResult]
 
 
 @dataclass

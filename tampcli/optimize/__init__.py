@@ -4,7 +4,7 @@ For a fixed sequence of actions the continuous problem is an ordinary NLP,
 solved with SLSQP and exact Jacobians, in three stages of growing cost:
 
     problem.lower(skeleton, scene, modes, world, options) -> TrajectoryProblem
-    solve.solve(problem, "final" | "keyframes" | "path", warm) -> TrajectoryResult
+    solve.solve(problem, "final" | "reach" | "keyframes" | "path", warm) -> TrajectoryResult
     verify.verify(problem, result) -> [violations in words]
 
 Modules: options (OptimizeOptions), problem (lowering), skeleton (steps,

@@ -215,7 +215,8 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
                           placements=placements, worst_constraint="time limit reached before "
                           "the keyframe NLP converged")
     return run.result("solved", cost=out.cost, phase_costs=phase_costs,
-                      violation=out.violation, kkt=KktStages(final_kkt, out.kkt), keyframes=kf,
+                      violation=out.violation,
+                      kkt=KktStages(final_kkt, out.kkt if collisions else None), keyframes=kf,
                       choices=choices, placements=placements)
 
 

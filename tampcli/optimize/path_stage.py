@@ -47,7 +47,8 @@ def path(run: Run, warm) -> TrajectoryResult:
     faces = list(face_grips(problem, kfr))
     result = None
     for grips in faces[:1] + [None] + faces[1:]:
-        if result is not None and (result.solved or time.perf_counter() > run.deadline):
+        if result is not None and (result.solved or result.status == "bounded"
+                                   or time.perf_counter() > run.deadline):
             break
         start = kfr
         if grips is not None:
@@ -96,6 +97,7 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
     waypoints, kkts = {}, {}
     checks = opts.interpolation_checks
     failing: set[int] = set()
+    least = _least_costs(run.start, kf.q, T)
     for attempt in range(VERIFY_ROUNDS):
         for ctx in contexts:
             if attempt and ctx.index not in failing:
@@ -111,6 +113,14 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
                                   choices=choices, placements=kfr.placements)
             waypoints[ctx.index] = out.x.reshape(T - 1, problem.n)
             kkts[ctx.index] = out.kkt
+            if attempt == 0 and run.cutoff is not None:
+                least[ctx.index] = out.cost
+                if sum(least) >= run.cutoff:
+                    return run.result(
+                        "bounded", cost=sum(least), keyframes=kf, choices=choices,
+                        placements=kfr.placements,
+                        worst_constraint=f"path bound {sum(least):.4g} after "
+                        f"{_phase_label(problem, ctx.index)}")
         traj, phases, poses, grasps = assemble(problem, run.start, waypoints, contexts)
         result = run.result("solved", cost=float(np.sum(np.diff(traj, axis=0) ** 2)),
                             phase_costs=_phase_costs(traj, T, problem.n_keyframes),
@@ -130,6 +140,18 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
             break
     return run.result("infeasible", violation=math.inf, worst_constraint=problems[0],
                       keyframes=kf, choices=choices, placements=kfr.placements)
+
+
+def _least_costs(start, qs, T: int) -> list[float]:
+    """Per motion, the least path cost through its two keyframes: |q_b - q_a|^2 / T
+    (Cauchy-Schwarz over T segments), so the motions solved so far plus these for
+    the rest bound the path's cost from below, the keyframes being fixed."""
+    prev = np.asarray(start, dtype=float)
+    out = []
+    for q in qs:
+        out.append(float(np.sum((np.asarray(q) - prev) ** 2)) / T)
+        prev = np.asarray(q)
+    return out
 
 
 def _phase_costs(traj, T, K):

@@ -9,7 +9,9 @@ import numpy as np
 from tampcli.optimize.values import Keyframes
 from tampcli.solution_kkt import KktStages
 
-STATUSES = ("solved", "infeasible", "limit")
+# "bounded": the path stage stopped once its bound (motions solved so far plus the
+# least cost through the keyframes of the rest) reached the caller's cutoff.
+STATUSES = ("solved", "infeasible", "limit", "bounded")
 STAGES = ("final", "reach", "keyframes", "path")
 
 

@@ -29,6 +29,7 @@ class Run:
         self.rng = np.random.default_rng(problem.options.seed)
         self.obstruction = None  # relocate.Obstruction of the last motion that failed
         self.anchors = None  # relocate.Relocation.anchors the keyframe NLP keeps to
+        self.cutoff = None  # a trajectory cost the caller has no use for reaching (bounded)
 
     def result(self, status: str, **fields) -> TrajectoryResult:
         fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")

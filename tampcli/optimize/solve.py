@@ -25,13 +25,20 @@ from tampcli.optimize.run import Run
 
 
 def solve(problem: TrajectoryProblem, stage: str, warm: TrajectoryResult | None = None,
-          options: OptimizeOptions | None = None) -> TrajectoryResult:
-    """Solve `stage` of the skeleton's NLP; never raises for a failed solve."""
+          options: OptimizeOptions | None = None, cutoff: float | None = None
+          ) -> TrajectoryResult:
+    """Solve `stage` of the skeleton's NLP; never raises for a failed solve.
+
+    `cutoff`: a trajectory cost at which the answer is of no use (branch and bound's
+    incumbent less this skeleton's symbolic part): the path stage stops, "bounded",
+    once the motions solved plus the least cost through the remaining keyframes
+    reach it."""
     if stage not in STAGES:
         raise ValueError(f"stage must be one of {', '.join(STAGES)}, got {stage!r}")
     if options is not None and options != problem.options:
         problem = dataclasses.replace(problem, options=options)
     run = Run(problem, stage)
+    run.cutoff = cutoff
     if problem.error is not None:
         return run.result("infeasible", worst_constraint=problem.error, proved=True,
                           bound_kind="proved", violation=math.inf)

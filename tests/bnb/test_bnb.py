@@ -51,7 +51,7 @@ def table_evaluator(table, calls=None):
     """Evaluate by looking up (names, stage) -> R; default solved with cost 1 (0 for
     the relaxation "reach", whose bound then prunes nothing)."""
 
-    def evaluate(ops, stage, warm):
+    def evaluate(ops, stage, warm, cutoff=None):
         names = tuple(op.name for op in ops)
         if calls is not None:
             calls.append((names, stage))
@@ -142,6 +142,26 @@ def test_a_failed_relaxation_leaves_the_decision_to_the_keyframe_nlp():
     res = branch_and_bound(src, ev, BnBOptions())
     assert res.status == "solved"
     assert [stage for _, stage in calls] == ["final", "reach", "keyframes", "path"]
+
+
+def test_the_path_stage_gets_the_cutoff_of_the_incumbent_and_may_stop_there():
+    src = Source([(("a",), 1), (("b",), 2)])
+    cutoffs = []
+
+    def evaluate(ops, stage, warm, cutoff=None):
+        if stage == "path":
+            cutoffs.append(cutoff)
+            if ops[0].name == "b":
+                return R("bounded", 1.3, worst_constraint="path bound 1.3 after motion 0")
+        return R("solved", {"reach": 0.0, "keyframes": 0.5}.get(stage, 1.0))
+
+    res = branch_and_bound(src, evaluate, BnBOptions(symbolic_weight=0.1))
+    assert cutoffs == [None, pytest.approx(1.1 - 0.2)]  # a's objective 1.1, b's w * 2
+    assert [op.name for op in res.best_plan] == ["a"]
+    b = res.skeletons[1]
+    assert (b.outcome, b.stage, b.bound_kind) == ("pruned", "path", "heuristic")
+    assert "path bound 1.3 after motion 0" in b.reason
+    assert res.stats["heuristic_prunes"] == 1
 
 
 def test_infeasible_prefix_prunes_every_skeleton_sharing_it():

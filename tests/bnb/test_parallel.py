@@ -93,10 +93,10 @@ def test_the_books_do_not_depend_on_which_worker_finishes_first():
 
 
 def test_a_failing_evaluation_is_that_skeleton_failed_and_the_search_goes_on():
-    def evaluate(ops, stage, warm):
+    def evaluate(ops, stage, warm, cutoff=None):
         if ops[0].name == "c":
             raise RuntimeError("the simulator fell over")
-        return table_evaluator(TABLE)(ops, stage, warm)
+        return table_evaluator(TABLE)(ops, stage, warm, cutoff)
 
     threads = _Threads(evaluate, 2)
     try:
@@ -115,7 +115,7 @@ def test_a_failing_evaluation_is_that_skeleton_failed_and_the_search_goes_on():
 def test_the_time_limit_cancels_what_is_out():
     release = threading.Event()
 
-    def slow(ops, stage, warm):
+    def slow(ops, stage, warm, cutoff=None):
         release.wait(5.0)
         return R("solved", 1.0)
 

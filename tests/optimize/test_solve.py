@@ -75,6 +75,25 @@ def test_seed_planar_example_pick_place_solves(planar):
     assert len(path.phases) + 1 == len(path.object_poses["o"])
 
 
+def test_the_path_stage_stops_at_a_cutoff_its_bound_reaches(planar):
+    scene, modes, world = planar
+    problem = lower(ops(*PLANAR_SKELETONS["pick-place"]), scene, modes, world)
+    keyframes = solve(problem, "keyframes")
+    path = solve(problem, "path", keyframes)
+    assert path.solved
+    # The reach relaxation drops rows: its cost is no more than the keyframes'.
+    assert solve(problem, "reach").cost <= keyframes.cost + 1e-6
+    # Any cutoff at or below the keyframes' least cost stops after the first motion,
+    # with a bound between it and the path's cost.
+    cut = solve(problem, "path", keyframes, cutoff=keyframes.cost)
+    assert cut.status == "bounded" and not cut.solved
+    assert keyframes.cost <= cut.cost <= path.cost + 1e-9
+    assert "after motion 0" in cut.worst_constraint
+    # A cutoff above the path's cost changes nothing.
+    same = solve(problem, "path", keyframes, cutoff=path.cost + 1.0)
+    assert same.solved and same.cost == pytest.approx(path.cost)
+
+
 def test_panda_over_a_wall(wall):
     scene, modes, world = wall
     problem = lower(ops("(pick a start)", "(place a goal)"), scene, modes, world,

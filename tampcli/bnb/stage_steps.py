@@ -1,0 +1,103 @@
+"""One skeleton's stages in branch and bound: run in turn, each result applied to its
+trial (a failure, a bound that prunes, the path it found). A mixin of
+bnb._Search, whose state (incumbent, tree, stats, records) it reads and writes."""
+
+from __future__ import annotations
+
+from tampcli.bnb.prefix_tree import shortest_failing_prefix
+from tampcli.bnb.values import Event
+
+STAGES = ("final", "reach", "keyframes", "path")
+# Stages whose cost bounds the skeleton's (heuristically: local optima): "reach" is the
+# keyframe NLP with collisions dropped, a relaxation a tenth of the keyframe NLP's time.
+BOUNDING = ("reach", "keyframes")
+
+
+class StageSteps:
+    def _stage(self, ops, stage: str, warm, cutoff: float | None = None):
+        t0 = self.clock()
+        result = self.evaluate(ops, stage, warm) if cutoff is None else \
+            self.evaluate(ops, stage, warm, cutoff=cutoff)
+        self.stats["nlp_solves"] += getattr(result, "nlp_solves", 1) or 1
+        self.stats["nlp_iterations"] += getattr(result, "iterations", 0) or 0
+        self.stats["optimize_seconds"] += self.clock() - t0
+        return result
+
+    def _run_stages(self, trial) -> None:
+        """Final placements, the relaxed and the real keyframes, full path: stop at the
+        first that fails or whose bound cannot beat the incumbent."""
+        warm = self.tree.warm_for(trial.names)
+        for stage in STAGES:
+            trial.reached = stage
+            self.emit(Event("stage", trial.rank, trial.names, trial.symbolic, stage=stage,
+                            seconds=self.elapsed()))
+            result = self._stage(trial.ops, stage, warm, self._cutoff(trial, stage))
+            if stage == "keyframes":
+                self.tree.put(trial.names, result)
+            if not self._apply_stage(trial, stage, result):
+                return
+            if result.status == "solved":
+                warm = result
+
+    def _cutoff(self, trial, stage: str) -> float | None:
+        """The trajectory cost at which `trial` cannot beat the incumbent (path stage)."""
+        if stage != "path" or self.incumbent is None or self.options.anytime:
+            return None
+        return self.incumbent.objective - self.w * trial.symbolic
+
+    def _apply_stage(self, trial, stage: str, result) -> bool:
+        """One stage's result into the trial; False when the trial ends there."""
+        if result.status == "bounded":
+            trial.outcome = "pruned"
+            trial.heuristic_bound = result.cost + self.w * trial.symbolic
+            # (In a parallel search the cutoff may come from a better skeleton of a later
+            # rank, not yet in the books: it beats this one all the same.)
+            trial.reason = (f"{result.worst_constraint}: objective {trial.heuristic_bound:.4g}"
+                            " >= the incumbent's (heuristic: keyframes fixed)")
+            self._unproved(trial)
+            return False
+        if result.status != "solved":
+            if stage == "reach":  # a relaxation's local failure proves nothing
+                return True
+            self._stage_failed(trial, stage, result)
+            return False
+        trial.kkt = getattr(result, "kkt", None) or trial.kkt
+        if stage in BOUNDING and result.cost is not None \
+                and self._keyframe_bound_prunes(trial, result.cost, stage):
+            return False
+        if stage == "path":
+            trial.path_result, trial.nlp_cost = result, result.cost
+        return True
+
+    def _stage_failed(self, trial, stage: str, result) -> None:
+        trial.outcome = "infeasible"
+        self.learn(result)
+        trial.reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
+        if not getattr(result, "proved", False) or result.status == "limit":
+            self.all_proved_infeasible = False
+            self._unproved(trial)
+        if stage == "keyframes" and self.options.prefix_pruning \
+                and result.status == "infeasible":
+            prefix = shortest_failing_prefix(trial.ops, trial.names, self.tree, self._stage,
+                                              self.is_geometric)
+            if prefix is not None and prefix != trial.names \
+                    and hasattr(self.skeletons, "forbid_prefix"):
+                self.skeletons.forbid_prefix(prefix)
+                self.stats["prefixes_forbidden"] += 1
+                trial.reason += f" (prefix {' '.join(prefix)} is infeasible)"
+
+    def _keyframe_bound_prunes(self, trial, keyframe_cost: float,
+                               stage: str = "keyframes") -> bool:
+        trial.heuristic_bound = keyframe_cost + self.w * trial.symbolic
+        if (self.incumbent is not None and not self.options.anytime
+                and trial.heuristic_bound >= self.incumbent.objective):
+            trial.outcome = "pruned"
+            what = "keyframe" if stage == "keyframes" else f"{stage} (keyframes, no collisions)"
+            trial.reason = (f"{what} bound {trial.heuristic_bound:.4g} >= incumbent "
+                            f"{self.incumbent.objective:.4g} (heuristic)")
+            self._unproved(trial)
+            return True
+        if stage == "keyframes" and len(trial.names) > len(self.deepest_feasible):
+            self.deepest_feasible = trial.names
+        return False
+
