@@ -76,6 +76,19 @@ class StageSteps:
         if not getattr(result, "proved", False) or result.status == "limit":
             self.all_proved_infeasible = False
             self._unproved(trial)
+        failed = getattr(result, "failed_actions", None)
+        if stage == "path" and self.options.prefix_pruning and result.status == "infeasible" \
+                and failed is not None and failed < len(trial.names) \
+                and hasattr(self.skeletons, "forbid_prefix"):
+            # A motion that found no path, with the sampler and every grip tried, fails
+            # again after the same actions: the skeletons sharing them are not worth
+            # their path stage (robust-planar p02: a blocker boxed in by two others,
+            # each order taking it first ~25 s). Heuristic, as the keyframe prefixes
+            # are: this skeleton's bound stays among the unproved.
+            prefix = trial.names[:failed]
+            self.skeletons.forbid_prefix(prefix)
+            self.stats["prefixes_forbidden"] += 1
+            trial.reason += f" (prefix {' '.join(prefix)} failed)"
         if stage == "keyframes" and self.options.prefix_pruning \
                 and result.status == "infeasible":
             prefix = shortest_failing_prefix(trial.ops, trial.names, self.tree, self._stage,

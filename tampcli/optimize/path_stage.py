@@ -110,7 +110,8 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
                 label = _phase_label(problem, ctx.index)
                 return run.result(out.status, violation=out.violation,
                                   worst_constraint=out.worst or label, keyframes=kf,
-                                  choices=choices, placements=kfr.placements)
+                                  choices=choices, placements=kfr.placements,
+                                  failed_actions=problem.step_of_keyframe(ctx.index).index + 1)
             waypoints[ctx.index] = out.x.reshape(T - 1, problem.n)
             kkts[ctx.index] = out.kkt
             if attempt == 0 and run.cutoff is not None:

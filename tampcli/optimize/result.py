@@ -45,6 +45,9 @@ class TrajectoryResult:
     kkt: KktStages = KktStages()  # this stage's certificate and its warm start's
     bound_kind: str | None = None  # "proved" | "heuristic"
     proved: bool = False
+    # Path stage, failed: the skeleton's first N actions, through the action the motion
+    # that failed leads to (what the failure depends on besides the keyframes).
+    failed_actions: int | None = None
     trajectory: np.ndarray | None = field(default=None, repr=False)
     phases: tuple = ()  # tampcli.solution.Phase
     object_poses: dict = field(default_factory=dict, repr=False)  # name -> [7-vector]

@@ -25,6 +25,7 @@ class R:
     worst_constraint: str | None = None
     proved: bool = False
     iterations: int = 1
+    failed_actions: int | None = None
 
 
 class Source:
@@ -162,6 +163,21 @@ def test_the_path_stage_gets_the_cutoff_of_the_incumbent_and_may_stop_there():
     assert (b.outcome, b.stage, b.bound_kind) == ("pruned", "path", "heuristic")
     assert "path bound 1.3 after motion 0" in b.reason
     assert res.stats["heuristic_prunes"] == 1
+
+
+def test_a_motion_that_failed_at_the_path_stage_forbids_the_actions_up_to_it():
+    plans = [(("x", "y", "z"), 3), (("x", "w", "z"), 4), (("x", "y", "v"), 5), (("q",), 6)]
+    src = Source(plans)
+    ev = table_evaluator({(("x", "y", "z"), "path"): R(
+        "infeasible", worst_constraint="motion 1 before (y): no path", failed_actions=2)})
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert src.forbidden == [("x", "y")]
+    assert ("x", "y", "v") not in src.drawn and ("x", "w", "z") in src.drawn
+    assert "(prefix x y failed)" in res.skeletons[0].reason
+    assert res.stats["prefixes_forbidden"] == 1
+    # Not proved: the failed skeleton's bound stays open.
+    assert res.skeletons[0].rank in {r.rank for r in res.skeletons if r.outcome == "infeasible"}
+    assert not res.optimal
 
 
 def test_infeasible_prefix_prunes_every_skeleton_sharing_it():
