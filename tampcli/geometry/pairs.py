@@ -201,18 +201,25 @@ class Batch:
         raws, placed = [], []
         closed = np.zeros(k, dtype=bool)  # answered exactly by prism.py
         samples = samples.tolist()
-        for t, (s, (key_a, pa, pose_a), (key_b, pb_, pose_b)) in enumerate(
-                zip(samples, sides_a, sides_b, strict=True)):
+        for s, (key_a, pa, pose_a), (key_b, pb_, pose_b) in zip(samples, sides_a, sides_b,
+                                                                strict=True):
             query = self.queries[s]
-            a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
-            placed.append((a, b))
-            if pa.shape.kind in PRISMS and pb_.shape.kind in PRISMS:
+            placed.append((query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)))
+        # Upright boxes apart in the plane, all at once (prism.upright_boxes).
+        boxes = [t for t, (a, b) in enumerate(placed)
+                 if a.shape.kind == "box" and b.shape.kind == "box"]
+        upright = dict(zip(boxes, prism.upright_boxes([placed[t] for t in boxes]),
+                           strict=True))
+        for t, (a, b) in enumerate(placed):
+            pa, pb_ = sides_a[t][1], sides_b[t][1]
+            exact = upright.get(t)
+            if exact is None and pa.shape.kind in PRISMS and pb_.shape.kind in PRISMS:
                 exact = prism.distance(a, b)
-                if exact is not None:
-                    raws.append(exact)
-                    closed[t] = True
-                    dist[t], p1[t], p2[t], _ = exact
-                    continue
+            if exact is not None:
+                raws.append(exact)
+                closed[t] = True
+                dist[t], p1[t], p2[t], _ = exact
+                continue
             raw = None if no_fcl(a, b) else fcl_distance(request, a, pa.obj, b, pb_.obj)
             raws.append(raw)
             if raw is None:

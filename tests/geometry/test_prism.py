@@ -118,3 +118,25 @@ def test_tilted_boxes_apart_along_a_face_normal_take_fcl_and_agree_with_our_gjk(
             assert d > 0
             np.testing.assert_allclose(pb - pa, d * n, atol=1e-7)
     assert 50 < sent < 300  # both paths were taken
+
+
+def test_many_upright_box_pairs_at_once_are_the_pairs_one_by_one():
+    rng = np.random.default_rng(11)
+    pairs, answered = [], 0
+    for _ in range(400):
+        sizes = [tuple(rng.uniform(0.02, 0.3, 3)) for _ in range(2)]
+        tilt = transforms.rot_x(0.2) if rng.uniform() < 0.1 else np.eye(3)
+        poses = [transforms.pose(transforms.rot_z(rng.uniform(-3, 3)) @ (tilt if k else np.eye(3)),
+                                 (*rng.uniform(-0.3, 0.3, 2), rng.uniform(0.0, 0.2)))
+                 for k in range(2)]
+        pairs.append(tuple(Placed(primitive("box", s), p)
+                           for s, p in zip(sizes, poses, strict=True)))
+    for (a, b), many in zip(pairs, prism.upright_boxes(pairs), strict=True):
+        one = prism.distance(a, b)
+        if many is None:
+            continue
+        answered += 1
+        assert many[0] == pytest.approx(one[0], abs=1e-12)
+        for x, y in zip(many[1:], one[1:], strict=True):
+            np.testing.assert_allclose(x, y, atol=1e-12)
+    assert 100 < answered < 400  # tilted and overlapping pairs are left to `distance`
