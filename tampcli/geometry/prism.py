@@ -141,8 +141,9 @@ def _disk_box(disk, box):
 def _corners(box) -> np.ndarray:
     """The rectangle's corners (4, 2), counter-clockwise."""
     centre, (ux, uy), (hx, hy) = box[1], box[2], box[3]
-    u, v = np.array([ux, uy]), np.array([-uy, ux])
-    return np.array([centre + sx * hx * u + sy * hy * v
+    ex, ey = (hx * ux, hx * uy), (-hy * uy, hy * ux)  # half extents along u and v
+    cx, cy = centre[0], centre[1]
+    return np.array([(cx + sx * ex[0] + sy * ey[0], cy + sx * ex[1] + sy * ey[1])
                      for sx, sy in ((1, 1), (-1, 1), (-1, -1), (1, -1))])
 
 
