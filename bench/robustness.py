@@ -1,4 +1,4 @@
-"""Robustness: the problems written blind (problems/robust-*, problems/blind2), solved and judged twice.
+"""Robustness: the problems written blind (problems/robust-*, blind2, blind3), solved and judged twice.
 
 Each problem is solved by `tampcli solve --json` in its own process (time
 limit per problem, skeleton cap high enough that time ends a search), then
@@ -45,6 +45,10 @@ ARM_ACTIONS = {"p01": 6, "p02": 8, "p03": 2, "p04": 2, "p05": 6, "p06": 8, "p07"
 BLIND2 = {"p01": ("side grasp", 2), "p02": ("obstruction", 6), "p03": ("stacking contact", 4),
           "p04": ("obstruction", 6), "p05": ("tight packing", 6), "p06": ("narrow passage", 2),
           "p07": ("push", 1), "p08": ("push", 2)}
+# problems/blind3, the same layout, written against the code of 26f71e9 (other arms too).
+BLIND3 = {"p01": ("stacking contact", 6), "p02": ("obstruction", 4),
+          "p03": ("narrow passage", 2), "p04": ("push", 3), "p05": ("tight packing", 6),
+          "p06": ("side grasp", 2), "p07": ("long sequence", 8), "p08": ("push", 1)}
 
 
 def problems() -> list[tuple[str, str, str, int]]:
@@ -52,6 +56,7 @@ def problems() -> list[tuple[str, str, str, int]]:
     rows = [("robust-arm", stem, cls, ARM_ACTIONS[stem]) for stem, cls in sorted(ARM_CLASSES.items())]
     rows += [(c.folder, c.stem, PLANAR_CLASSES[c.kind], c.actions) for c in PLANAR_CASES]
     rows += [("blind2", stem, cls, n) for stem, (cls, n) in sorted(BLIND2.items())]
+    rows += [("blind3", stem, cls, n) for stem, (cls, n) in sorted(BLIND3.items())]
     return rows
 
 
