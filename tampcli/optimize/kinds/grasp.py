@@ -17,7 +17,7 @@ import numpy as np
 from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
 from tampcli.optimize import grasp_families as F
-from tampcli.optimize.bodies import TOUCH_TOLERANCE
+from tampcli.optimize.bodies import TOUCH_TOLERANCE, pose_matrix
 from tampcli.optimize.grips import touch_distance
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import LoweringError, Step
@@ -177,18 +177,24 @@ def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
     """The discrete grip of a grasp, its starting parameter and the IK keyframe.
 
     Every fitting grip of every family the step allows is tried by IK; the
-    reachable ones first, then the least penetrating (so a hand that only
-    fits under a shelf from the side is taken from the side), then the
-    family's rank (a top grasp where it is clear: what the library's
-    problems were built with), then the joint distance. A retry (jitter)
-    ranks by penetration and distance only, so it may try another family.
-    Families are tried in rank order and the search stops at the first that
-    has a reachable, clear grip.
+    reachable ones first, then the least penetrating (so a hand that only fits
+    under a shelf from the side is taken from the side), then the family's rank
+    (a top grasp where it is clear: what the library's problems were built
+    with), then the joint distance. A retry (jitter) also tries each grip at the
+    place that ends the hold and ranks by reachability and penetration at both
+    ends, then distance, so it may try another family, and fingers that would
+    close into a neighbour at a tightly packed place close across the other
+    pair of faces (blind3 p05). Not the first try: the keyframe NLP can slide a
+    placement clear where its region has room, and the pick's own choice is then
+    the cheaper one (arm-pick-place p04: 0.44 against 0.67). Families are tried
+    in rank order and the search stops at the first that has a reachable, clear
+    grip.
     """
     problem = walk.problem
     info = problem.bodies[step.obj]
     margin = problem.options.margin
     moved = {n: p for n, p in walk.poses.items() if n != step.obj}
+    place = _place_of(walk, step) if walk.jitter else None
     best = None
     for rank, name in enumerate(step.kind.families):
         family = F.FAMILIES[name]
@@ -197,16 +203,48 @@ def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
             walk.choices[step.index] = choice
             grip = walk.grip_of(step)
             q, res = walk.solve_ik(obj_pose @ transforms.pose_inverse(grip.matrix(t)))
-            clash = 0.0
-            if problem.checker is not None:
-                d = problem.checker.min_distance(q, moved, None, frozenset({step.obj}),
-                                                 static=False, horizon=margin)
-                clash = max(0.0, margin - d)
-            score = (res > walk.IK_TOLERANCE, round(clash, 3), 0 if walk.jitter else rank,
-                     float(np.linalg.norm(q - walk.q_prev)))
+            clash = _clash(walk, q, moved, {step.obj}, margin)
+            far, clash_place = False, 0.0
+            if place is not None:
+                far, clash_place = _at_place(walk, place, grip, t, moved, margin)
+            score = (res > walk.IK_TOLERANCE, far, round(clash + clash_place, 3),
+                     0 if walk.jitter else rank, float(np.linalg.norm(q - walk.q_prev)))
             if best is None or score < best[0]:
                 best = (score, choice, t, q)
-        if best is not None and not best[0][0] and best[0][1] == 0.0 and not walk.jitter:
+        if best is not None and not any(best[0][:2]) and best[0][2] == 0.0 and not walk.jitter:
             break
     _, choice, t, q = best
     return choice, t, q
+
+
+def _clash(walk, q, moved, ignore, margin: float) -> float:
+    """How far (m) inside the margin of anything the arm at q is."""
+    checker = walk.problem.checker
+    if checker is None:
+        return 0.0
+    d = checker.min_distance(q, moved, None, frozenset(ignore), static=False, horizon=margin)
+    return max(0.0, margin - d)
+
+
+def _place_of(walk, step):
+    """(the placing step that ends this hold, its placement) when the walk has it."""
+    for later in walk.problem.steps[step.index + 1:]:
+        if later.kind.places and later.grasp_step == step.index:
+            p = walk.placements.get(later.index)
+            return None if p is None else (later, p)
+    return None
+
+
+def _at_place(walk, place, grip, t: float, moved, margin: float) -> tuple[bool, float]:
+    """(unreachable, clash) of the hand holding by `grip` at the placement, at its yaw
+    or the half turn (the place's own choice, kinds/place.py), whichever is better."""
+    later, p = place
+    hold = transforms.pose_inverse(grip.matrix(t))
+    best = None
+    for turn in (0.0, math.pi):
+        target = pose_matrix(p.x, p.y, later.rest_z, p.yaw + turn) @ hold
+        q, res = walk.solve_ik(target)
+        score = (res > walk.IK_TOLERANCE,
+                 _clash(walk, q, moved, {later.obj, later.support}, margin))
+        best = score if best is None or score < best else best
+    return best
