@@ -45,7 +45,10 @@ from tampcli.optimize.layout import grip_block, waypoint_block
 from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
-MEASURE_LIMIT = 0.01  # m: the measured touch corrects the nominal reach by at most this
+MEASURE_LIMIT = 0.01  # m: one measurement corrects the reach by at most this ...
+MEASURE_TOTAL = 0.04  # m: ... and all of them together by at most this
+MEASURE_ROUNDS = 5  # measurements of the touch, each after IK at the corrected reach
+MEASURE_TOLERANCE = 1e-3  # m: a touch this close to CONTACT_GAP needs no correction
 
 
 def _clear_at_both_ends(walk, step, obj_pose, end, choices):
@@ -77,6 +80,29 @@ def _clear_at_both_ends(walk, step, obj_pose, end, choices):
             best = (score, first, c)
     walk.q_prev = q_prev
     return best[1], best[2]
+
+
+def _measured_touch(walk, step, obj_pose, choice, q0):
+    """The start keyframe with the contact's reach measured on the arm's own collision
+    shapes (the fingers' extent behind the tool origin is the arm's), corrected and
+    measured again until the touch is CONTACT_GAP: a flat face needs one round; a
+    drum between the open fingers touches their inner edges, 2.4 cm nearer than
+    their outer sides' tangent plane (blind3 p08: 9 cm across)."""
+    problem = walk.problem
+    nominal = face_grip(problem, step, choice).reach
+    reach = nominal
+    for _ in range(MEASURE_ROUNDS):
+        gap = clearance(problem, step.obj, obj_pose, q0) - CONTACT_GAP
+        if abs(gap) <= MEASURE_TOLERANCE:
+            break
+        reach = float(np.clip(reach - np.clip(gap, -MEASURE_LIMIT, MEASURE_LIMIT),
+                              nominal - MEASURE_TOTAL, nominal + MEASURE_TOTAL))
+        walk.choices[step.index] = dataclasses.replace(choice, reach=reach)
+        walk.q_prev = q0
+        q0, _ = walk.best_of([(obj_pose @ transforms.pose_inverse(
+            walk.grip_of(step).matrix(0.0)), None)])
+    walk.choices[step.index] = dataclasses.replace(choice, reach=reach)
+    return q0
 
 
 def face_grip(problem, step, choice):
@@ -166,14 +192,7 @@ class Push(ModeKind):
             levels = (False, True) if level_lift(info) is not None else (False,)
             choices = [GripChoice(face=a, level=level) for level in levels for a in aligned]
             q0, choice = _clear_at_both_ends(walk, step, obj_pose, end, choices)
-            # Touch, measured: the fingers' extent behind the tool origin is the arm's.
-            nominal = face_grip(problem, step, choice)
-            gap = clearance(problem, step.obj, obj_pose, q0) - CONTACT_GAP
-            reach = nominal.reach - float(np.clip(gap, -MEASURE_LIMIT, MEASURE_LIMIT))
-            walk.choices[step.index] = dataclasses.replace(choice, reach=reach)
-            walk.q_prev = q0
-            q0, _ = walk.best_of([(obj_pose @ transforms.pose_inverse(
-                walk.grip_of(step).matrix(0.0)), None)])
+            q0 = _measured_touch(walk, step, obj_pose, choice, q0)
             G = transforms.pose_inverse(walk.grip_of(step).matrix(0.0))
             walk.q_prev = q0
             q1, _ = walk.best_of([(end @ G, None)])
