@@ -70,7 +70,7 @@ def test_the_skeleton_lines_and_the_summary_show_it(solved):
     _, sol, err = solved
     stationarity = sol["kkt"]["path"]["stationarity"]
     assert f"kkt {stationarity:.1e}, " in err
-    assert "infeasible at -, symbolic cost 2, bound inf, nlp cost -, kkt -," in err
+    assert "infeasible before any NLP, symbolic cost 2, bound inf, nlp cost -, kkt -," in err
     assert re.search(r"KKT path: stationarity \S+ \(\|grad f\| \S+\), complementarity \S+, "
                      r"min multiplier \S+, dual feasible; carried by motion 1 before "
                      r"\(place box goal\): collision planar_body vs obstacle", err), err

@@ -185,7 +185,9 @@ def _summary(sol, ui, args) -> None:
         else:
             # Piped: one plain line per skeleton, easy to grep.
             for rank, plan, sym, bound, stage, outcome, cost, kkt, secs in rows:
-                ui.err.print(f"skeleton #{rank}: {outcome} at {stage}, symbolic cost {sym}, "
+                where = f" at {stage}" if stage != "-" else \
+                    ("" if outcome == "not reached" else " before any NLP")
+                ui.err.print(f"skeleton #{rank}: {outcome}{where}, symbolic cost {sym}, "
                              f"bound {bound}, nlp cost {cost}, kkt {kkt}, {secs} s: {plan}",
                              markup=False, highlight=False)
     ui.info("time: " + ", ".join(f"{k} {v:.2f}s" for k, v in seconds.items())
