@@ -226,7 +226,7 @@ class _Search(StageSteps):
                                            "proved" if proved else "heuristic", None, None,
                                            None, 0.0, why))
         self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, outcome="pruned",
-                        message=why))
+                        message=why, seconds=self.elapsed()))
         return True
 
     def _pruned_by_bound(self, trial: _Trial) -> bool:
@@ -255,7 +255,8 @@ class _Search(StageSteps):
             "proved" if prune.node.proved else "heuristic", None, None, None,
             self.clock() - trial.started, prune.reason))
         self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, "relaxation",
-                        outcome, bound=trial.proved_bound, message=prune.reason))
+                        outcome, bound=trial.proved_bound, message=prune.reason,
+                        seconds=self.elapsed()))
         return True
 
     def _unproved(self, trial: _Trial) -> None:

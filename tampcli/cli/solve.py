@@ -272,7 +272,8 @@ class _LiveView:
         elif event.kind == "outcome":
             self.ui.info(f"[{event.seconds:6.1f}s] skeleton #{event.rank} "
                          f"({len(event.plan)} actions, cost {event.symbolic_cost:g}): "
-                         f"{event.outcome} at {event.stage}"
+                         f"{event.outcome} "
+                         + (f"at {event.stage}" if event.stage else "before any NLP")
                          + (f" - {event.message}" if event.message else ""))
 
     def _table(self) -> Table:
