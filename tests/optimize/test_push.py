@@ -106,11 +106,13 @@ def test_face_grip_offset_derivative_and_touch(grip, face, tool_z):
 def test_a_level_hand_runs_above_the_support_and_below_the_top():
     tall = dataclasses.replace(BOX, half=(0.06, 0.04, 0.04))
     lift = level_lift(tall)
-    assert lift == pytest.approx(0.005)  # its axis 4.5 cm above the support
+    assert lift == pytest.approx(0.016)  # its axis 5.6 cm above: the wrist 1.1 cm clear
     grip = level_face_grip(face_of(tall, 0.0), lift)
     c, G, _, _ = grip.parts(0.0)
     assert (-G.T @ c)[2] == pytest.approx(lift)
-    assert level_lift(BOX) == pytest.approx(0.015)  # 6 cm tall: the axis 1 cm below its top
+    # 6 cm tall: as high as the fingertips allow, the axis 1 cm below its top (the
+    # wrist 5 mm above the support, clear of it by the tight margin).
+    assert level_lift(BOX) == pytest.approx(0.02)
     flat = dataclasses.replace(BOX, half=(0.06, 0.06, 0.02))  # robust-arm p09's crate
     assert level_lift(flat) is None  # too low for the hand to clear the support
 

@@ -31,7 +31,13 @@ OFFSET_FRACTION = 0.5  # the contact point stays in the middle half of the face
 CONTACT_GAP = 5e-4  # m: pusher to face when touching (verify allows 1 mm in, 2 mm out)
 PANDA_FINGER_HALF = 0.0131  # m: tool origin to the open fingers' outer side (collision mesh)
 PANDA_FINGERTIP_HALF = 0.01  # m: a fingertip's half width, across the tool's y axis
-LEVEL_CLEARANCE = 0.045  # m: a level hand's axis above the support (half the hand, 1 cm)
+PANDA_WRIST_HALF = 0.045  # m: the wrist (panda_link7) either side of a level hand's axis
+# A level hand's axis above the support: its wrist clear of the support by the 1 cm margin
+# and 1 mm where the object is tall enough; else as high as the fingertips allow, its wrist
+# clear by the 1 mm tight margin. At 4.5 cm (half the hand and the margin, before) the
+# wrist met the support (blind2 p07).
+LEVEL_CLEARANCE = PANDA_WRIST_HALF + 0.011
+LEVEL_TIGHT = PANDA_WRIST_HALF + 0.0015
 BOX_FACES = (0.0, 0.5 * math.pi, math.pi, -0.5 * math.pi)
 
 
@@ -129,7 +135,9 @@ def level_lift(info) -> float | None:
     when the object is too low for both."""
     need = LEVEL_CLEARANCE - info.half[2]
     most = info.half[2] - PANDA_FINGERTIP_HALF
-    return max(need, 0.0) if need <= most else None
+    if need <= most:
+        return max(need, 0.0)
+    return most if LEVEL_TIGHT - info.half[2] <= most else None
 
 
 def level_face_grip(face: Face, lift: float, reach: float | None = None,
