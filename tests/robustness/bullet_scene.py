@@ -1,12 +1,16 @@
 """The checker's own PyBullet scene, built from scene.toml (see checker.py).
 
-Shares no code with tampcli: poses, shapes and the Panda are read and built
-here, from the file format's meanings.
+Shares no code with tampcli: poses, shapes and the arms are read and built
+here, from the file format's meanings (docs/robots.md: which URDF each model is,
+its finger joints and their open values).
 """
 from __future__ import annotations
 
 import math
 import os
+import re
+import tempfile
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
@@ -15,8 +19,44 @@ import pybullet_data
 import tomllib
 
 TOL_PEN, TOL_REST = 1e-3, 5e-3
-GRIP_LINKS = ("panda_hand", "panda_leftfinger", "panda_rightfinger")
-FINGERS = ("panda_finger_joint1", "panda_finger_joint2")
+ROOT = Path(__file__).resolve().parents[2]
+
+
+@dataclass(frozen=True)
+class Arm:
+    """A built-in arm model as docs/robots.md describes it."""
+
+    urdf: str
+    hand: str  # a link rigidly on the tool
+    grip_links: tuple[str, ...]  # may touch what the hand holds
+    fingers: dict  # finger joint -> its value when open
+    closes: bool  # prismatic fingers this checker closes on a held object
+
+
+def _data(path: str) -> str:
+    return os.path.join(pybullet_data.getDataPath(), path)
+
+
+_XARM_GRIPPER = ("xarm_gripper_base_link", "left_outer_knuckle", "left_finger",
+                 "left_inner_knuckle", "right_outer_knuckle", "right_finger",
+                 "right_inner_knuckle")
+ARMS = {
+    "panda": Arm(_data("franka_panda/panda.urdf"), "panda_hand",
+                 ("panda_hand", "panda_leftfinger", "panda_rightfinger"),
+                 {"panda_finger_joint1": 0.04, "panda_finger_joint2": 0.04}, True),
+    # The URDF file tampcli ships for this model (data, not code).
+    "kuka_iiwa": Arm(str(ROOT / "tampcli" / "geometry" / "robots" / "kuka_iiwa_gripper.urdf"),
+                     "gripper_palm",
+                     ("gripper_palm", "gripper_left_finger", "gripper_right_finger"),
+                     {"gripper_left_joint": 0.04, "gripper_right_joint": 0.04}, True),
+    "xarm6": Arm(_data("xarm/xarm6_with_gripper.urdf"), "xarm_gripper_base_link",
+                 _XARM_GRIPPER,
+                 dict.fromkeys(("drive_joint", "left_finger_joint", "left_inner_knuckle_joint",
+                                "right_outer_knuckle_joint", "right_finger_joint",
+                                "right_inner_knuckle_joint"), 0.0), False),
+}
+# Every finger joint of every arm: a solution that has one among its joints moves them.
+FINGERS = tuple(j for arm in ARMS.values() for j in arm.fingers)
 
 
 def pose_of(v) -> tuple[list[float], list[float]]:
@@ -39,6 +79,26 @@ def pose_error(a: np.ndarray, b: np.ndarray) -> tuple[float, float]:
     d = float(np.linalg.norm(a[:3, 3] - b[:3, 3]))
     c = (np.trace(a[:3, :3].T @ b[:3, :3]) - 1.0) / 2.0
     return d, math.acos(max(-1.0, min(1.0, c)))
+
+
+def _load_urdf(urdf: str, pos, quat, client: int) -> int:
+    """loadURDF; a `package://` mesh path not beside the file (where PyBullet looks for
+    it) taken from pybullet_data in a copy (the KUKA's meshes)."""
+    here = Path(urdf).parent
+    text = Path(urdf).read_text()
+
+    def absolute(match: re.Match) -> str:
+        rest = match.group(1)
+        beside = here / rest
+        return str(beside if beside.is_file() else Path(pybullet_data.getDataPath()) / rest)
+
+    fixed = re.sub(r"package://([^\"']+)", absolute, text)
+    if fixed == text:
+        return pb.loadURDF(urdf, pos, quat, useFixedBase=True, physicsClientId=client)
+    with tempfile.TemporaryDirectory() as folder:
+        copy = Path(folder) / Path(urdf).name
+        copy.write_text(fixed)
+        return pb.loadURDF(str(copy), pos, quat, useFixedBase=True, physicsClientId=client)
 
 
 class Replay:
@@ -82,11 +142,13 @@ class Replay:
                                           physicsClientId=self.c)
             self.robot = pb.createMultiBody(0.0, col, -1, pos, physicsClientId=self.c)
             self.links, self.joint_index, self.limits = {-1: "planar"}, {}, {}
+            self.base_links = {-1}
             return
-        urdf = (str(folder / robot["urdf"]) if "urdf" in robot else
-                os.path.join(pybullet_data.getDataPath(), "franka_panda/panda.urdf"))
-        self.robot = pb.loadURDF(urdf, pos, quat, useFixedBase=True, physicsClientId=self.c)
+        self.arm = ARMS.get(self.model, ARMS["panda"])
+        urdf = str(folder / robot["urdf"]) if "urdf" in robot else self.arm.urdf
+        self.robot = _load_urdf(urdf, pos, quat, self.c)
         self.links = {-1: "base"}
+        self.base_links = {-1}
         self.joint_index, self.limits, parent = {}, {}, {}
         for j in range(pb.getNumJoints(self.robot, physicsClientId=self.c)):
             info = pb.getJointInfo(self.robot, j, physicsClientId=self.c)
@@ -95,6 +157,8 @@ class Replay:
             if info[2] != pb.JOINT_FIXED:
                 self.joint_index[info[1].decode()] = j
                 self.limits[info[1].decode()] = (info[8], info[9])
+            elif info[16] in self.base_links:  # fixed to the base: stands where it does
+                self.base_links.add(j)
         self._self_pairs(parent)
 
     def _self_pairs(self, parent: dict[int, int]) -> None:
@@ -107,28 +171,32 @@ class Replay:
                 k = parent.get(k, -1)
             return k
 
-        fingers = {self.joint_index.get(f) for f in FINGERS}
+        fingers = {self.joint_index.get(f) for f in self.arm.fingers}
+        gripper = {j for j, n in self.links.items() if n in self.arm.grip_links}
+        # The gripper's own linkage (the xArm's knuckles) is not a self-collision.
         self.self_pairs = [(a, b) for i, a in enumerate(geo) for b in geo[i + 1:]
-                           if up(a) != b and up(b) != a and {a, b} != fingers]
+                           if up(a) != b and up(b) != a and {a, b} != fingers
+                           and not {a, b} <= gripper]
 
     # -- state --------------------------------------------------------------
-    def set_q(self, names: list[str], q, fingers: float | None) -> None:
+    def set_q(self, names: list[str], q, open_fingers: bool) -> None:
+        """The arm at q (joints `names`); `open_fingers`: the fingers open too."""
         if self.model == "planar":
             pb.resetBasePositionAndOrientation(self.robot, [q[0], q[1], self.base_z],
                                                [0, 0, 0, 1], physicsClientId=self.c)
             return
         for n, v in zip(names, q, strict=True):
             pb.resetJointState(self.robot, self.joint_index[n], v, physicsClientId=self.c)
-        if fingers is not None:
-            for f in FINGERS:
+        if open_fingers:
+            for f, value in self.arm.fingers.items():
                 if f in self.joint_index:
-                    pb.resetJointState(self.robot, self.joint_index[f], fingers,
+                    pb.resetJointState(self.robot, self.joint_index[f], value,
                                        physicsClientId=self.c)
 
     def hand(self) -> np.ndarray:
         if self.model == "planar":
             return matrix(*pb.getBasePositionAndOrientation(self.robot, physicsClientId=self.c))
-        k = next((j for j, n in self.links.items() if n == "panda_hand"), max(self.links))
+        k = next((j for j, n in self.links.items() if n == self.arm.hand), max(self.links))
         s = pb.getLinkState(self.robot, k, computeForwardKinematics=True, physicsClientId=self.c)
         return matrix(s[4], s[5])
 
@@ -138,17 +206,20 @@ class Replay:
                                            physicsClientId=self.c)
 
     def close_fingers(self, held: str) -> None:
-        """Close both fingers until they touch `held` (PyBullet distances)."""
+        """Close both (prismatic) fingers until they touch `held` (PyBullet distances);
+        an arm whose fingers this checker does not close keeps them open."""
+        if not self.arm.closes:
+            return
         d = 0.04
         for _ in range(3):
             self.set_fingers(d)
             gaps = [self._dist(self.robot, self.bodies[held], self.joint_index[f], 0.05)
-                    for f in FINGERS]
+                    for f in self.arm.fingers]
             d = max(0.0, min(0.04, d - max(0.0, min(gaps))))
         self.set_fingers(d)
 
     def set_fingers(self, d: float) -> None:
-        for f in FINGERS:
+        for f in self.arm.fingers:
             pb.resetJointState(self.robot, self.joint_index[f], d, physicsClientId=self.c)
 
     def _dist(self, a: int, b: int, link: int, reach: float) -> float:
@@ -165,9 +236,9 @@ class Replay:
         for name, body in self.bodies.items():
             for p in pb.getClosestPoints(self.robot, body, 0.0, physicsClientId=self.c):
                 link = self.links.get(p[3], "?")
-                if p[8] >= -TOL_PEN or (grasped and name == held and link in GRIP_LINKS):
+                if p[8] >= -TOL_PEN or (grasped and name == held and link in self.arm.grip_links):
                     continue
-                if p[3] == -1 and name == stand:
+                if p[3] in self.base_links and name == stand:
                     continue
                 out.append((link, name, p[8]))
         names = list(self.bodies)

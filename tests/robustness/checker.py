@@ -171,12 +171,12 @@ def check_replay(rp: Replay, sol: dict, goal) -> list[Violation]:
             rp.place(n, poses[n][k])
         pushing = att is not None and ph["action"] is not None and e > s
         if att and att != held:
-            rp.set_q(names, traj[s], None if own_fingers else 0.04)
+            rp.set_q(names, traj[s], not own_fingers)
             rel = np.linalg.inv(rp.hand()) @ poses[att][k]
             grasped = not pushing and rp.model != "planar"
         held = att
         for t, q in _samples(traj, s, e):
-            rp.set_q(names, q, None if own_fingers else 0.04)
+            rp.set_q(names, q, not own_fingers)
             if att:
                 m = rp.hand() @ rel
                 rp.place(att, m)
@@ -196,7 +196,7 @@ def check_replay(rp: Replay, sol: dict, goal) -> list[Violation]:
                                                f"{-d * 1000:.1f} mm at waypoint {t:.1f}"))
         for n in movable:
             if n == att:
-                rp.set_q(names, traj[e], None)
+                rp.set_q(names, traj[e], False)
                 dp, da = pose_error(rp.hand() @ rel, poses[n][k + 1])
                 what = f"{n} is not where the hand holds it at waypoint {e}"
             else:
