@@ -97,7 +97,11 @@ def run(folder: str, stem: str, limit: float, work: Path) -> dict:
         row["valid"] = check.returncode == 0
         if not row["valid"]:
             row["why"] = (check.stdout + check.stderr).strip().splitlines()[-1][:160]
-        violations = check_solution(out)
+        try:
+            violations = check_solution(out)
+        except Exception as err:  # noqa: BLE001 - one problem's checker failure, not the bench's
+            row["checker"], row["why"] = False, f"checker failed: {type(err).__name__}: {err}"[:160]
+            return row
         row["checker"] = not violations
         if violations and row["valid"]:
             row["why"] = f"checker: {violations[0]}"[:160]
