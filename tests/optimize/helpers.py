@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -42,3 +43,21 @@ def load(scene_name: str):
     scene = _load_scene(SCENES / f"{scene_name}.scene.toml", domain, problem)
     modes = _load_modes(domain_path(scene_name).with_name("modes.toml"), domain)
     return domain, problem, scene, modes
+
+
+@contextmanager
+def lowered_folder(folder: Path, stem: str, skeleton):
+    """A problem written blind as one folder (domain.pddl, modes.toml, STEM.pddl,
+    STEM.scene.toml), `skeleton` lowered on its own World and CollisionChecker."""
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.world import World
+    from tampcli.optimize.options import OptimizeOptions
+    from tampcli.optimize.problem import lower
+
+    domain = parser.parse_domain_file(folder / "domain.pddl")
+    problem = parser.parse_problem_file(folder / f"{stem}.pddl")
+    scene = _load_scene(folder / f"{stem}.scene.toml", domain, problem)
+    modes = _load_modes(folder / "modes.toml", domain)
+    with World(scene) as world:
+        yield lower(skeleton, scene, modes, world, OptimizeOptions(), domain=domain,
+                    checker=CollisionChecker(world))

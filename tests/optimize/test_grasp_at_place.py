@@ -13,18 +13,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tampcli.geometry.collision import CollisionChecker
-from tampcli.geometry.scene import load_scene
-from tampcli.geometry.world import World
 from tampcli.optimize.grasp_families import closing_width
 from tampcli.optimize.init import keyframe_guess
-from tampcli.optimize.modes import load_modes
-from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.problem import lower
 from tampcli.optimize.solve import solve
-from tampcli.pddl import parser
 
-from .helpers import ops
+from .helpers import lowered_folder, ops
 
 HERE = Path(__file__).resolve().parents[2] / "problems" / "blind3" / "p05"
 SKELETON = ops("(pick a start)", "(place a tray)", "(pick b start)", "(place b tray)",
@@ -33,13 +26,8 @@ SKELETON = ops("(pick a start)", "(place a tray)", "(pick b start)", "(place b t
 
 @pytest.fixture(scope="module")
 def packed():
-    domain = parser.parse_domain_file(HERE / "domain.pddl")
-    problem = parser.parse_problem_file(HERE / "p05.pddl")
-    scene = load_scene(HERE / "p05.scene.toml", domain, problem)
-    modes = load_modes(HERE / "modes.toml", domain)
-    with World(scene) as world:
-        yield lower(SKELETON, scene, modes, world, OptimizeOptions(), domain=domain,
-                    checker=CollisionChecker(world))
+    with lowered_folder(HERE, "p05", SKELETON) as problem:
+        yield problem
 
 
 def test_the_retry_closes_the_fingers_across_the_long_sides(packed):

@@ -12,30 +12,18 @@ from pathlib import Path
 
 import pytest
 
-from tampcli.geometry.collision import CollisionChecker
-from tampcli.geometry.scene import load_scene
-from tampcli.geometry.world import World
-from tampcli.optimize.modes import load_modes
-from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.problem import lower
 from tampcli.optimize.solve import solve
 from tampcli.optimize.verify import verify
-from tampcli.pddl import parser
 
-from .helpers import ops
+from .helpers import lowered_folder, ops
 
 HERE = Path(__file__).resolve().parents[2] / "problems" / "blind3" / "p06"
 
 
 @pytest.fixture(scope="module")
 def shelf():
-    domain = parser.parse_domain_file(HERE / "domain.pddl")
-    problem = parser.parse_problem_file(HERE / "p06.pddl")
-    scene = load_scene(HERE / "p06.scene.toml", domain, problem)
-    modes = load_modes(HERE / "modes.toml", domain)
-    with World(scene) as world:
-        yield lower(ops("(pick box under)", "(place box pedestal)"), scene, modes, world,
-                    OptimizeOptions(), domain=domain, checker=CollisionChecker(world))
+    with lowered_folder(HERE, "p06", ops("(pick box under)", "(place box pedestal)")) as problem:
+        yield problem
 
 
 def test_the_grasp_under_the_shelf_costs_about_what_its_keyframes_say(shelf):

@@ -14,30 +14,18 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tampcli.geometry.collision import CollisionChecker
-from tampcli.geometry.scene import load_scene
-from tampcli.geometry.world import World
 from tampcli.optimize.init import keyframe_guess
-from tampcli.optimize.modes import load_modes
-from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.problem import lower
 from tampcli.optimize.solve import solve
-from tampcli.pddl import parser
 
-from .helpers import ops
+from .helpers import lowered_folder, ops
 
 HERE = Path(__file__).resolve().parents[2] / "problems" / "blind2" / "p01"
 
 
 @pytest.fixture(scope="module")
 def nooks():
-    domain = parser.parse_domain_file(HERE / "domain.pddl")
-    problem = parser.parse_problem_file(HERE / "p01.pddl")
-    scene = load_scene(HERE / "p01.scene.toml", domain, problem)
-    modes = load_modes(HERE / "modes.toml", domain)
-    with World(scene) as world:
-        yield lower(ops("(pick can nook-a)", "(place can nook-b)"), scene, modes, world,
-                    OptimizeOptions(), domain=domain, checker=CollisionChecker(world))
+    with lowered_folder(HERE, "p01", ops("(pick can nook-a)", "(place can nook-b)")) as problem:
+        yield problem
 
 
 def test_the_place_in_the_nook_is_guessed_from_its_open_side(nooks):
