@@ -39,6 +39,7 @@ from tampcli.bnb import BOUNDING, STAGES, _Search, _Trial
 from tampcli.bnb.outcome import TIE
 from tampcli.bnb.prefix_bounds import Relax
 from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
+from tampcli.bnb.stage_steps import call_stage
 from tampcli.bnb.values import BnBOptions, BnBResult, Evaluate, Event, SkeletonSource
 from tampcli.solution import SkeletonRecord
 
@@ -95,8 +96,7 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
         tree.put(prefix, result)
 
     def stage(prefix_ops, name, warm, cutoff=None):
-        result = evaluate(prefix_ops, name, warm) if cutoff is None else \
-            evaluate(prefix_ops, name, warm, cutoff=cutoff)
+        result = call_stage(evaluate, prefix_ops, name, warm, cutoff)
         counts[0] += getattr(result, "nlp_solves", 1) or 1
         counts[1] += getattr(result, "iterations", 0) or 0
         return result

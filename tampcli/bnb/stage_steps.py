@@ -13,11 +13,18 @@ STAGES = ("final", "reach", "keyframes", "path")
 BOUNDING = ("reach", "keyframes")
 
 
+def call_stage(evaluate, ops, stage: str, warm, cutoff: float | None = None):
+    """`evaluate` (values.Evaluate) of one stage: `cutoff` is passed only when there is
+    one, so an evaluator of three arguments serves a search with no incumbent."""
+    if cutoff is None:
+        return evaluate(ops, stage, warm)
+    return evaluate(ops, stage, warm, cutoff=cutoff)
+
+
 class StageSteps:
     def _stage(self, ops, stage: str, warm, cutoff: float | None = None):
         t0 = self.clock()
-        result = self.evaluate(ops, stage, warm) if cutoff is None else \
-            self.evaluate(ops, stage, warm, cutoff=cutoff)
+        result = call_stage(self.evaluate, ops, stage, warm, cutoff)
         self.stats["nlp_solves"] += getattr(result, "nlp_solves", 1) or 1
         self.stats["nlp_iterations"] += getattr(result, "iterations", 0) or 0
         self.stats["optimize_seconds"] += self.clock() - t0
@@ -99,8 +106,7 @@ class StageSteps:
                 self.stats["prefixes_forbidden"] += 1
                 trial.reason += f" (prefix {' '.join(prefix)} is infeasible)"
 
-    def _keyframe_bound_prunes(self, trial, keyframe_cost: float,
-                               stage: str = "keyframes") -> bool:
+    def _keyframe_bound_prunes(self, trial, keyframe_cost: float, stage: str) -> bool:
         trial.heuristic_bound = keyframe_cost + self.w * trial.symbolic
         if (self.incumbent is not None and not self.options.anytime
                 and trial.heuristic_bound >= self.incumbent.objective):

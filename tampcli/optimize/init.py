@@ -61,21 +61,25 @@ class GuessWalk:
         """IK for each (target, tag): reachable first, then the least deep within the
         margin (to the millimetre: a hand 6 mm from a post beats one 3 cm into it, though
         both are within the 1 cm margin; blind2 p01), then closest to q_prev."""
-        problem = self.problem
-        margin = problem.options.margin
         best = None
+        moved = {n: t for n, t in self.poses.items() if n not in (held or ("",))[0:1]}
         for target, tag in targets:
             q, res = self.solve_ik(target)
-            clash = 0.0
-            if problem.checker is not None and len(targets) > 1:
-                moved = {n: t for n, t in self.poses.items() if n not in (held or ("",))[0:1]}
-                d = problem.checker.min_distance(q, moved, held, frozenset(ignore), static=False,
-                                                 horizon=margin)
-                clash = round(max(0.0, margin - d), 3)
+            clash = round(self.clash(q, moved, held, ignore), 3) if len(targets) > 1 else 0.0
             score = (res > self.IK_TOLERANCE, clash, float(np.linalg.norm(q - self.q_prev)))
             if best is None or score < best[0]:
                 best = (score, q, tag)
         return best[1], best[2]
+
+    def clash(self, q, moved, held=None, ignore=frozenset()) -> float:
+        """How far (m) within the margin of anything (`moved`: bodies off their start
+        pose) the arm at q, and what it holds, are: 0 when clear or with no checker."""
+        checker, margin = self.problem.checker, self.problem.options.margin
+        if checker is None:
+            return 0.0
+        d = checker.min_distance(q, moved, held, frozenset(ignore), static=False,
+                                 horizon=margin)
+        return max(0.0, margin - d)
 
     @staticmethod
     def angle(v) -> float:

@@ -204,8 +204,7 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
         out = _tight_keyframes(run, layout, bounds, out, choices)
     kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
     T = problem.options.waypoints
-    qs = [run.start, *kf.q]
-    phase_costs = tuple(float(np.sum((b - a) ** 2)) / T for a, b in zip(qs, qs[1:], strict=False))
+    phase_costs = kf.least_costs(run.start, T)
     if out.status != "solved":
         return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
                           keyframes=kf, choices=choices, placements=placements)

@@ -98,7 +98,9 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
     waypoints, kkts = {}, {}
     checks = opts.interpolation_checks
     failing: set[int] = set()
-    least = _least_costs(run.start, kf.q, T)
+    # Motions solved so far, and the least cost through the keyframes of the rest: a
+    # bound on the path's cost, the keyframes being fixed.
+    least = list(kf.least_costs(run.start, T))
     costs: dict[int, float] = {}
     for attempt in range(VERIFY_ROUNDS):
         for ctx in contexts:
@@ -127,11 +129,12 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
             costs[ctx.index] = out.cost
             if attempt == 0 and run.cutoff is not None:
                 least[ctx.index] = out.cost
-                if sum(least) >= run.cutoff:
+                bound = sum(least)
+                if bound >= run.cutoff:
                     return run.result(
-                        "bounded", cost=sum(least), keyframes=kf, choices=choices,
+                        "bounded", cost=bound, keyframes=kf, choices=choices,
                         placements=kfr.placements,
-                        worst_constraint=f"path bound {sum(least):.4g} after "
+                        worst_constraint=f"path bound {bound:.4g} after "
                         f"{_phase_label(problem, ctx.index)}")
         traj, phases, poses, grasps = assemble(problem, run.start, waypoints, contexts)
         result = run.result("solved", cost=float(np.sum(np.diff(traj, axis=0) ** 2)),
@@ -152,18 +155,6 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
             break
     return run.result("infeasible", violation=math.inf, worst_constraint=problems[0],
                       keyframes=kf, choices=choices, placements=kfr.placements)
-
-
-def _least_costs(start, qs, T: int) -> list[float]:
-    """Per motion, the least path cost through its two keyframes: |q_b - q_a|^2 / T
-    (Cauchy-Schwarz over T segments), so the motions solved so far plus these for
-    the rest bound the path's cost from below, the keyframes being fixed."""
-    prev = np.asarray(start, dtype=float)
-    out = []
-    for q in qs:
-        out.append(float(np.sum((np.asarray(q) - prev) ** 2)) / T)
-        prev = np.asarray(q)
-    return out
 
 
 def _phase_costs(traj, T, K):

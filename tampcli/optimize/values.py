@@ -81,6 +81,12 @@ class Keyframes:
                          for k in range(n_keyframes)),
                    {s: float(blocks[grip_block(s)][0]) for s in grip_steps})
 
+    def least_costs(self, start, T: int) -> tuple[float, ...]:
+        """Per motion, the least path cost through its two keyframes (the first from
+        `start`): |q_b - q_a|^2 / T, by Cauchy-Schwarz over its T segments."""
+        qs = [np.asarray(start, dtype=float), *self.q]
+        return tuple(float(np.sum((b - a) ** 2)) / T for a, b in zip(qs, qs[1:], strict=False))
+
     def warmed(self, warm: Keyframes) -> Keyframes:
         """These keyframes with those `warm` has for the same keyframes and steps."""
         q = tuple(np.array(warm.q[k], dtype=float)

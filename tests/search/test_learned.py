@@ -128,13 +128,7 @@ def test_a_solved_skeleton_defers_its_supersequences_to_the_end():
 
 
 def test_what_meets_every_finding_defers_its_padded_copies():
-    task, _ = pen(1)
-    src = source(task)
-    assert next(src).names == ("(pick a floor)", "(place a goal)")
-    src.learn(Blocker("b1", "(place a goal)"))
-    clearing = next(src)
-    assert clearing.names[0] == "(pick b1 goal)" and len(clearing.names) == 4
-    later = [p.names for p in src]
+    src, clearing, later = _after_learning_b1(1)
     padded = [len(n) > 4 and _contains(n, clearing.names) for n in later]
     assert src.stats["redundant"] == sum(padded) > 0
     assert padded == sorted(padded)  # after every other skeleton
@@ -149,6 +143,18 @@ def test_forbidden_prefixes_stay_forbidden_after_a_restart():
     assert all(p.names[:1] != ("(pick b1 goal)",) for p in src)
 
 
+def _after_learning_b1(k: int):
+    """(source, the skeleton clearing b1, the rest drawn) on pen-k, after geometry said
+    b1 is in the way of placing a."""
+    task, _ = pen(k)
+    src = source(task)
+    assert next(src).names == ("(pick a floor)", "(place a goal)")
+    src.learn(Blocker("b1", "(place a goal)"))
+    clearing = next(src)
+    assert clearing.names[0] == "(pick b1 goal)" and len(clearing.names) == 4
+    return src, clearing, [p.names for p in src]
+
+
 def _contains(long, short):
     it = iter(long)
     return all(any(x == y for y in it) for x in short)
@@ -158,13 +164,7 @@ def test_a_copy_that_also_moves_a_body_left_alone_is_not_deferred():
     # Geometry named only b1 (its worst row), so the skeleton clearing b1 meets every
     # finding and fails: the one that clears b2 as well is what the pen needs, and
     # comes before the padded copies that only move b1 or a again.
-    task, _ = pen(2)
-    src = source(task)
-    assert next(src).names == ("(pick a floor)", "(place a goal)")
-    src.learn(Blocker("b1", "(place a goal)"))
-    clearing = next(src)
-    assert clearing.names[0] == "(pick b1 goal)" and len(clearing.names) == 4
-    later = [p.names for p in src]
+    src, clearing, later = _after_learning_b1(2)
     both = [i for i, n in enumerate(later)
             if _contains(n, clearing.names) and any("b2" in a for a in n[:-2])]
     padded = [i for i, n in enumerate(later)

@@ -192,7 +192,6 @@ def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
     """
     problem = walk.problem
     info = problem.bodies[step.obj]
-    margin = problem.options.margin
     moved = {n: p for n, p in walk.poses.items() if n != step.obj}
     place = _place_of(walk, step) if walk.jitter else None
     best = None
@@ -203,10 +202,10 @@ def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
             walk.choices[step.index] = choice
             grip = walk.grip_of(step)
             q, res = walk.solve_ik(obj_pose @ transforms.pose_inverse(grip.matrix(t)))
-            clash = _clash(walk, q, moved, {step.obj}, margin)
+            clash = walk.clash(q, moved, ignore={step.obj})
             far, clash_place = False, 0.0
             if place is not None:
-                far, clash_place = _at_place(walk, place, grip, t, moved, margin)
+                far, clash_place = _at_place(walk, place, grip, t, moved)
             score = (res > walk.IK_TOLERANCE, far, round(clash + clash_place, 3),
                      0 if walk.jitter else rank, float(np.linalg.norm(q - walk.q_prev)))
             if best is None or score < best[0]:
@@ -215,15 +214,6 @@ def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
             break
     _, choice, t, q = best
     return choice, t, q
-
-
-def _clash(walk, q, moved, ignore, margin: float) -> float:
-    """How far (m) inside the margin of anything the arm at q is."""
-    checker = walk.problem.checker
-    if checker is None:
-        return 0.0
-    d = checker.min_distance(q, moved, None, frozenset(ignore), static=False, horizon=margin)
-    return max(0.0, margin - d)
 
 
 def _place_of(walk, step):
@@ -235,7 +225,7 @@ def _place_of(walk, step):
     return None
 
 
-def _at_place(walk, place, grip, t: float, moved, margin: float) -> tuple[bool, float]:
+def _at_place(walk, place, grip, t: float, moved) -> tuple[bool, float]:
     """(unreachable, clash) of the hand holding by `grip` at the placement, at its yaw
     or the half turn (the place's own choice, kinds/place.py), whichever is better."""
     later, p = place
@@ -245,6 +235,6 @@ def _at_place(walk, place, grip, t: float, moved, margin: float) -> tuple[bool, 
         target = pose_matrix(p.x, p.y, later.rest_z, p.yaw + turn) @ hold
         q, res = walk.solve_ik(target)
         score = (res > walk.IK_TOLERANCE,
-                 _clash(walk, q, moved, {later.obj, later.support}, margin))
+                 walk.clash(q, moved, ignore={later.obj, later.support}))
         best = score if best is None or score < best else best
     return best
