@@ -186,7 +186,10 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
         return ("iterations" if res.status == 9 else None), str(res.message)
 
     reason, message = run(x0, max_iterations)
-    if reason != "time" and _worth_restart(best) and best.iterations < max_iterations:
+    # From its own start SLSQP would only repeat the same iterations (arm-sort: 26 of
+    # them, three times per search).
+    if reason != "time" and _worth_restart(best) and best.iterations < max_iterations \
+            and not np.array_equal(best.merit_x, x0):
         # SLSQP can creep along a cheap valley just outside the feasible set (arm-kitchen
         # keyframes: cost 0.31 at a 0.1 degree tilt for 25 iterations, while the best
         # feasible point cost 1.30); a fresh start there, with a fresh quasi-Newton
