@@ -1,4 +1,4 @@
-"""Robustness: the problems written blind (problems/robust-*, blind2, blind3), solved and judged twice.
+"""Robustness: the problems written blind (problems/robust-*, blind2..blind4), solved and judged twice.
 
 Each problem is solved by `tampcli solve --json` in its own process (time
 limit per problem, skeleton cap high enough that time ends a search), then
@@ -50,6 +50,11 @@ BLIND3 = {"p01": ("stacking contact", 6), "p02": ("obstruction", 4),
           "p03": ("narrow passage", 2), "p04": ("push", 3), "p05": ("tight packing", 6),
           "p06": ("side grasp", 2), "p07": ("long sequence", 8), "p08": ("push", 1)}
 
+# problems/blind4, the same layout, written against the code of 65a3b7a.
+BLIND4 = {"p01": ("cluttered shelf", 2), "p02": ("obstruction", 4),
+          "p03": ("stacking contact", 6), "p04": ("push", 1), "p05": ("swap via buffer", 6),
+          "p06": ("rotated start", 2), "p07": ("push", 1), "p08": ("narrow passage", 2)}
+
 
 def problems() -> list[tuple[str, str, str, int]]:
     """(folder, stem, class, expected actions) of every robustness problem."""
@@ -57,6 +62,7 @@ def problems() -> list[tuple[str, str, str, int]]:
     rows += [(c.folder, c.stem, PLANAR_CLASSES[c.kind], c.actions) for c in PLANAR_CASES]
     rows += [("blind2", stem, cls, n) for stem, (cls, n) in sorted(BLIND2.items())]
     rows += [("blind3", stem, cls, n) for stem, (cls, n) in sorted(BLIND3.items())]
+    rows += [("blind4", stem, cls, n) for stem, (cls, n) in sorted(BLIND4.items())]
     return rows
 
 
