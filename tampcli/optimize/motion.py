@@ -15,7 +15,7 @@ import numpy as np
 from tampcli.geometry.sampled_path import SamplingOptions, resample, sampled_path
 from tampcli.optimize import relocate
 from tampcli.optimize.collide import held_spec
-from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible
+from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
 from tampcli.optimize.path import (
     allowed_contacts,
     motion_margins,
@@ -47,6 +47,9 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """
     problem = run.problem
     opts = problem.options
+    straight = _straight_line(run, ctx, T, checks, label)
+    if straight is not None:
+        return straight
     held_height = 0.0
     if ctx.held is not None:
         held_height = 2 * problem.bodies[ctx.held.name].half[2]
@@ -85,6 +88,29 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         if out.status == "solved" or time.perf_counter() > run.deadline:
             return out
     return _clear_anyway(run, ctx, T, checks, label, out)
+
+
+def _straight_line(run, ctx, T: int, checks: int, label: str):
+    """The straight joint-space line at even steps, solved, when it meets every row at
+    every sample point with the margin; else None. The cost, sum |dq|^2, is then at
+    its least over all paths, |q_b - q_a|^2 / T (Cauchy-Schwarz): the NLP could only
+    find it again, or a worse local optimum from a start lifted over the obstacles
+    (arm-kitchen: 5 of its 8 motions)."""
+    problem = run.problem
+    m = problem.motions[ctx.index]
+    if m.pushes:
+        return None  # the tool's straight line, not the joints' (_straight_push)
+    margin = problem.options.margin
+    own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, margin,
+                         min(margin, problem.options.tight_margin))
+    rows, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
+                                 run.checker, T, checks, ctx.rest_z, label, None, margin, own)
+    x = np.linspace(ctx.q_a, ctx.q_b, T + 1)[1:-1].reshape(-1)
+    if not nlp_feasible(rows, layout, x):
+        return None
+    bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
+                      strict=True))
+    return outcome_of(rows, layout, x, bounds, "the straight line")
 
 
 IK_LINE_TOLERANCE = 1e-3  # IK residual of a waypoint on a push's straight line

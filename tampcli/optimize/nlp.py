@@ -86,6 +86,12 @@ def violation_at(evaluate, layout, x) -> float:
     return violation_of(eq, ineq)[0]
 
 
+def outcome_of(evaluate, layout, x, bounds, message: str) -> NlpOutcome:
+    """The NlpOutcome of a point found without SLSQP (no iterations)."""
+    return outcome_at(_Evaluator(evaluate, layout), np.asarray(x, dtype=float), None, 0,
+                      message, bounds)
+
+
 def nlp_feasible(evaluate, layout, x) -> bool:
     return violation_at(evaluate, layout, x) <= FEASIBILITY
 
