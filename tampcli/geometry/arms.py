@@ -78,7 +78,7 @@ KUKA_IIWA = Arm(
 )
 
 # The xArm gripper is a four-bar linkage: `drive_joint` leads, five joints
-# mimic it; 0 is open (8.3 cm between the pads), 0.85 closed. The pads'
+# mimic it; 0 is open (8.7 cm between the pads, measured with their 1 mm collision margin), 0.85 closed. The pads'
 # tips lie 0.165 m along the gripper base's z axis when open.
 XARM6 = Arm(
     urdf="xarm/xarm6_with_gripper.urdf",

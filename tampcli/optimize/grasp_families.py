@@ -66,7 +66,8 @@ class GraspFamily(ABC):
         if not self.choices(info, opening):
             narrow = min(closing_width(info, psi) for psi in QUARTERS)
             return (f"{100 * narrow:.1f} cm wide; the gripper opens "
-                    f"{100 * opening:.0f} cm")
+                    f"{100 * opening:.1f} cm and takes at most "
+                    f"{100 * (opening - GRIPPER_SLACK):.1f} cm")
         return None
 
     @abstractmethod

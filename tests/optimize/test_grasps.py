@@ -182,7 +182,7 @@ def test_families_the_gripper_can_do():
         0.0, math.pi}
     # Wider than the opening both ways: nothing; with no fingers, no width limit.
     ok, why = F.possible(None, _box(0.12, 0.09, 0.06), 0.08)
-    assert ok == () and "9.0 cm wide; the gripper opens 8 cm" in why[0]
+    assert ok == () and "9.0 cm wide; the gripper opens 8.0 cm and takes at most 7.5 cm" in why[0]
     assert F.possible(None, _box(0.12, 0.09, 0.06), None)[0] == ("top", "side")
     # Too flat for the fingers from the side; the request keeps only what it names.
     ok, why = F.possible(["side"], _box(0.05, 0.05, 0.02), 0.08)
