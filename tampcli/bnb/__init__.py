@@ -45,12 +45,20 @@ from tampcli.bnb.outcome import TIE, explain, heuristic_prunes, stop_label
 from tampcli.bnb.prefix_bounds import PrefixBounds, Relax
 from tampcli.bnb.prefix_tree import PrefixTree
 from tampcli.bnb.stage_steps import BOUNDING, STAGES, StageSteps
-from tampcli.bnb.values import BnBOptions, BnBResult, Evaluate, Event, SkeletonSource, StageResult
+from tampcli.bnb.values import (
+    BnBOptions,
+    BnBResult,
+    Evaluate,
+    Event,
+    Judged,
+    SkeletonSource,
+    StageResult,
+)
 from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
 
-__all__ = ["BOUNDING", "STAGES", "BnBOptions", "BnBResult", "Evaluate", "Event", "SkeletonSource", "StageResult",
-           "branch_and_bound"]
+__all__ = ["BOUNDING", "STAGES", "BnBOptions", "BnBResult", "Evaluate", "Event", "Judged",
+           "SkeletonSource", "StageResult", "branch_and_bound"]
 
 
 
@@ -121,6 +129,7 @@ class _Search(StageSteps):
         self.tree = PrefixTree()
         self.evaluated: dict[tuple[str, ...], int] = {}  # geometric actions -> rank
         self.records: list[SkeletonRecord] = []
+        self.judged: dict[tuple[str, ...], Judged] = {}
         self.stats = {"skeletons_generated": 0, "skeletons_optimized": 0,
                       "skeletons_pruned": 0, "skeletons_infeasible": 0, "nlp_solves": 0,
                       "nlp_iterations": 0, "prefixes_forbidden": 0, "optimize_seconds": 0.0,
@@ -216,9 +225,12 @@ class _Search(StageSteps):
         if twin is not None:
             why = f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
             proved = twin not in self.unproved_ranks
+            infeasible = False  # (its twin may still be out, in a parallel search)
         else:
             why = f"shares the infeasible prefix {' '.join(blocked)}"
             proved = bool(getattr(self.tree.get(blocked), "proved", False))
+            infeasible = True
+        self.judged[trial.names] = Judged(trial.rank, "infeasible" if infeasible else "pruned")
         if not proved:
             self._unproved(trial)
         self.records.append(SkeletonRecord(trial.rank, trial.names, trial.symbolic, "pruned",
@@ -254,6 +266,7 @@ class _Search(StageSteps):
             trial.rank, trial.names, trial.symbolic, outcome, trial.proved_bound,
             "proved" if prune.node.proved else "heuristic", None, None, None,
             self.clock() - trial.started, prune.reason))
+        self.judged[trial.names] = Judged(trial.rank, outcome)
         self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, "relaxation",
                         outcome, bound=trial.proved_bound, message=prune.reason,
                         seconds=self.elapsed()))
@@ -285,6 +298,7 @@ class _Search(StageSteps):
             self.failures.append((trial.rank, trial.names, trial.reached, trial.reason or ""))
         elif trial.outcome == "pruned":
             self.stats["skeletons_pruned"] += 1
+        self.judged[trial.names] = Judged(trial.rank, trial.outcome, trial.path_result)
         heuristic = trial.heuristic_bound is not None
         self.records.append(SkeletonRecord(
             trial.rank, trial.names, trial.symbolic, trial.outcome,
@@ -328,11 +342,11 @@ class _Search(StageSteps):
             return BnBResult("solved", None, best.result, best.plan, best.symbolic,
                              best.objective, proved_lb,
                              self.stats["stop"] == "optimal (proved)", self.records,
-                             self.stats, self.improvements)
+                             self.stats, self.improvements, self.judged)
         status = "limit"
         if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):
             status = "unsolvable"
         reason = explain(stop, self.rank, self.failures, self.deepest_feasible, self.options)
         return BnBResult(status, reason, None, (), None, None, proved_lb, False, self.records,
-                         self.stats, self.improvements)
+                         self.stats, self.improvements, self.judged)
 

@@ -236,6 +236,7 @@ class _ParallelSearch(_Search):
         self.all_proved_infeasible = False
         self._unproved(trial)
         self._record(trial)
+        del self.judged[trial.names]  # a crash says nothing of the plan
 
     def _drop_hopeless(self, out: deque[_Out]) -> None:
         """The incumbent is optimal among skeletons not drawn: those out that cannot

@@ -87,6 +87,20 @@ class Event:
     message: str | None = None
 
 
+@dataclass(frozen=True)
+class Judged:
+    """What the search found of one plan, for a pass after it that meets the plan
+    again (bnb/eliminate.py: the answer less an action may be a skeleton already
+    drawn). `outcome`: "infeasible" (a stage or a relaxation failed, or a prefix it
+    starts with was found infeasible), "solved" (`path`: its path-stage result) or
+    "pruned" (by a bound, or the same geometric actions as a plan already solved:
+    nothing said of its feasibility)."""
+
+    rank: int
+    outcome: str
+    path: Any = None
+
+
 @dataclass
 class BnBResult:
     status: str  # "solved" | "unsolvable" | "limit"
@@ -100,3 +114,4 @@ class BnBResult:
     skeletons: list[SkeletonRecord] = field(default_factory=list)
     stats: dict = field(default_factory=dict)
     improvements: list[tuple[float, float]] = field(default_factory=list)  # (seconds, objective)
+    judged: dict[tuple[str, ...], Judged] = field(default_factory=dict)  # by action names
