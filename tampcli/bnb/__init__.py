@@ -41,13 +41,14 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
-from tampcli.bnb.outcome import TIE, explain, heuristic_prunes, stop_label
+from tampcli.bnb.outcome import TIE, Ending, Failure, explain, heuristic_prunes, stop_label
 from tampcli.bnb.prefix_bounds import PrefixBounds, Relax
 from tampcli.bnb.prefix_tree import PrefixTree
 from tampcli.bnb.stage_steps import BOUNDING, STAGES, StageSteps
 from tampcli.bnb.values import (
     BnBOptions,
     BnBResult,
+    Diagnose,
     Evaluate,
     Event,
     Judged,
@@ -57,7 +58,7 @@ from tampcli.bnb.values import (
 from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
 
-__all__ = ["BOUNDING", "STAGES", "BnBOptions", "BnBResult", "Evaluate", "Event", "Judged",
+__all__ = ["BOUNDING", "STAGES", "BnBOptions", "BnBResult", "Diagnose", "Evaluate", "Event", "Judged",
            "SkeletonSource", "StageResult", "branch_and_bound"]
 
 
@@ -71,6 +72,7 @@ def branch_and_bound(
     clock: Callable[[], float] = time.perf_counter,
     learn: Callable[[Any], None] | None = None,
     relax: Relax | None = None,
+    diagnose: Diagnose | None = None,
 ) -> BnBResult:
     """Search skeletons best-first with staged NLP bounds; see the module docstring.
 
@@ -80,9 +82,10 @@ def branch_and_bound(
     stage (or of a prefix's keyframes), passed through untouched. `learn(result)`
     hears of every stage that failed (what geometry found in the way). `relax(ops)`
     bounds the trajectory cost of every completion of a prefix (prefix_bounds.py).
+    `diagnose(ops, result)` says more of a failed stage when there is no solution.
     """
     search = _Search(skeletons, evaluate, options or BnBOptions(), is_geometric, on_event,
-                     clock, learn, relax)
+                     clock, learn, relax, diagnose)
     return search.run()
 
 
@@ -111,6 +114,7 @@ class _Trial:
     heuristic_bound: float | None = None
     nlp_cost: float | None = None
     path_result: Any = None
+    failed: Any = None  # the result of the stage that failed
     kkt: KktStages = KktStages()  # of the stages solved so far
 
 
@@ -118,10 +122,11 @@ class _Search(StageSteps):
     """The state of one branch and bound: incumbent, records, statistics."""
 
     def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock, learn,
-                 relax):
+                 relax, diagnose=None):
         self.skeletons, self.evaluate, self.options = skeletons, evaluate, options
         self.bounds = None if relax is None else PrefixBounds(relax, is_geometric)
         self.learn = learn or (lambda result: None)
+        self.diagnose = diagnose
         self.is_geometric, self.clock = is_geometric, clock
         self.emit = on_event or (lambda event: None)
         self.w = options.symbolic_weight
@@ -136,7 +141,8 @@ class _Search(StageSteps):
                       "relaxed_bound_seconds": 0.0}
         self.incumbent: _Incumbent | None = None
         self.improvements: list[tuple[float, float]] = []
-        self.failures: list[tuple[int, tuple[str, ...], str, str]] = []  # rank, plan, stage, why
+        self.failures: list[Failure] = []
+        self.learned_prefixes: list[tuple[str, ...]] = []  # forbidden after a local failure
         self.deepest_feasible: tuple[str, ...] = ()
         self.all_proved_infeasible = True
         # Proved bounds (w * symbolic cost + relaxed bound) of drawn skeletons no proof excludes:
@@ -295,7 +301,8 @@ class _Search(StageSteps):
                                 cost=trial.nlp_cost, bound=total, seconds=self.elapsed()))
         elif trial.outcome == "infeasible":
             self.stats["skeletons_infeasible"] += 1
-            self.failures.append((trial.rank, trial.names, trial.reached, trial.reason or ""))
+            self.failures.append(Failure(trial.rank, trial.names, trial.reason or "", trial.ops,
+                                         trial.failed))
         elif trial.outcome == "pruned":
             self.stats["skeletons_pruned"] += 1
         self.judged[trial.names] = Judged(trial.rank, trial.outcome, trial.path_result)
@@ -346,7 +353,10 @@ class _Search(StageSteps):
         status = "limit"
         if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):
             status = "unsolvable"
-        reason = explain(stop, self.rank, self.failures, self.deepest_feasible, self.options)
+        ending = Ending(stop, self.rank, status == "unsolvable", tuple(self.learned_prefixes),
+                        getattr(self.skeletons, "scope", None))
+        reason = explain(ending, self.failures, self.deepest_feasible, self.options,
+                         self.diagnose)
         return BnBResult(status, reason, None, (), None, None, proved_lb, False, self.records,
                          self.stats, self.improvements, self.judged)
 

@@ -58,12 +58,19 @@ class SkeletonSource(Protocol):
     Optional, used when present: `solved(names)` hears of each feasible
     skeleton; `lower_bound()` is a proved bound on the symbolic cost of every
     skeleton not yet drawn (needed when the source does not draw skeletons
-    in non-decreasing cost, as one that learns from failures does)."""
+    in non-decreasing cost, as one that learns from failures does); `scope`, which
+    skeletons it yields, in words (say "loopless: no symbolic state twice"), named
+    when it runs out without a solution."""
 
     def __iter__(self): ...
 
     def forbid_prefix(self, names: tuple[str, ...]) -> None: ...
 
+
+# diagnose(ops, result): more of a failed stage's result than its worst row, in words
+# (bnb/violations.py: the rows violated at the NLP's best point, by action), or None;
+# called only for the failures a search without a solution names in its reason.
+Diagnose = Callable[[tuple[Any, ...], Any], "str | None"]
 
 # evaluate(ops, stage, warm), and for the path stage once there is an incumbent,
 # evaluate(ops, "path", warm, cutoff=C): C is the trajectory cost at which the
