@@ -3,7 +3,9 @@
 Skeletons arrive lazily from the top-k generator in non-decreasing symbolic
 cost; each is evaluated cheap to expensive (final placements, keyframes without
 collisions, keyframes, full path) and dropped at the first stage that fails. Geometry comes in only as a
-callable `evaluate(skeleton, stage, warm)` (toy functions in the tests).
+callable `evaluate(skeleton, stage, warm)` (toy functions in the tests), and,
+for the reason of a search without a solution, `diagnose(skeleton, result)`
+(violations.py: the rows a failed keyframe NLP left violated, by action).
 `prefix_tree.py` keeps keyframe results by prefix (memo, warm starts,
 infeasible prefixes); `prefix_bounds.py` bounds prefix nodes with `relax(ops)`
 (e.g. optimize/relaxed.py's convex QP).
@@ -41,7 +43,15 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
-from tampcli.bnb.outcome import TIE, Ending, Failure, explain, heuristic_prunes, stop_label
+from tampcli.bnb.outcome import (
+    SHOWN,
+    TIE,
+    Ending,
+    Failure,
+    explain,
+    heuristic_prunes,
+    stop_label,
+)
 from tampcli.bnb.prefix_bounds import PrefixBounds, Relax
 from tampcli.bnb.prefix_tree import PrefixTree
 from tampcli.bnb.stage_steps import BOUNDING, STAGES, StageSteps
@@ -301,8 +311,11 @@ class _Search(StageSteps):
                                 cost=trial.nlp_cost, bound=total, seconds=self.elapsed()))
         elif trial.outcome == "infeasible":
             self.stats["skeletons_infeasible"] += 1
-            self.failures.append(Failure(trial.rank, trial.names, trial.reason or "", trial.ops,
-                                         trial.failed))
+            # Only the failures the reason names keep their stage's result (a diagnosis).
+            named = len(self.failures) < SHOWN
+            self.failures.append(Failure(trial.rank, trial.names, trial.reason or "",
+                                         trial.ops if named else (),
+                                         trial.failed if named else None))
         elif trial.outcome == "pruned":
             self.stats["skeletons_pruned"] += 1
         self.judged[trial.names] = Judged(trial.rank, trial.outcome, trial.path_result)
