@@ -110,6 +110,8 @@ class _TimedSkeletons:
     """Wraps the skeleton source: counts the time spent producing skeletons
     (search.learned.LearningSource: its bound and learning pass through)."""
 
+    scope = "loopless: none passes a symbolic state twice"  # what TopK(loopless=True) yields
+
     def __init__(self, topk, timers: Timers):
         self.topk, self.timers = topk, timers
 
@@ -265,7 +267,8 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
 
     bnb_start = time.perf_counter()
     search = dict(is_geometric=lambda op: modes.get_mode(op.action).geometric,
-                  on_event=on_event, learn=learn, relax=evaluate.relaxed)
+                  on_event=on_event, learn=learn, relax=evaluate.relaxed,
+                  diagnose=evaluate.violated)
     skeletons = _TimedSkeletons(source, timers)
     if options.bnb.jobs == 1:
         result = branch_and_bound(skeletons, evaluate, options.bnb, **search)
@@ -321,6 +324,14 @@ class _Evaluator:
     def relaxed(self, ops):
         """The prefix's relaxed bound (optimize/relaxed.py), None off the planar robot."""
         return self.relaxed_bound(self._lowered(ops))
+
+    def violated(self, ops, result) -> str | None:
+        """The rows a failed keyframe stage left violated, by action (bnb/violations.py)."""
+        from tampcli.bnb.violations import by_action, violated_rows
+        from tampcli.optimize.grips import Kinematics
+
+        rows = violated_rows(self._lowered(ops), result, Kinematics(self.geometry.world))
+        return by_action(rows, tuple(op.name for op in ops))
 
 
 def _worker_parts(paths: InputPaths, options: SolveOptions, deadline: float):

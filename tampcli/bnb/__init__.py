@@ -3,7 +3,9 @@
 Skeletons arrive lazily from the top-k generator in non-decreasing symbolic
 cost; each is evaluated cheap to expensive (final placements, keyframes without
 collisions, keyframes, full path) and dropped at the first stage that fails. Geometry comes in only as a
-callable `evaluate(skeleton, stage, warm)` (toy functions in the tests).
+callable `evaluate(skeleton, stage, warm)` (toy functions in the tests), and,
+for the reason of a search without a solution, `diagnose(skeleton, result)`
+(violations.py: the rows a failed keyframe NLP left violated, by action).
 `prefix_tree.py` keeps keyframe results by prefix (memo, warm starts,
 infeasible prefixes); `prefix_bounds.py` bounds prefix nodes with `relax(ops)`
 (e.g. optimize/relaxed.py's convex QP).
@@ -41,16 +43,33 @@ from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
-from tampcli.bnb.outcome import TIE, explain, heuristic_prunes, stop_label
+from tampcli.bnb.outcome import (
+    SHOWN,
+    TIE,
+    Ending,
+    Failure,
+    explain,
+    heuristic_prunes,
+    stop_label,
+)
 from tampcli.bnb.prefix_bounds import PrefixBounds, Relax
 from tampcli.bnb.prefix_tree import PrefixTree
 from tampcli.bnb.stage_steps import BOUNDING, STAGES, StageSteps
-from tampcli.bnb.values import BnBOptions, BnBResult, Evaluate, Event, SkeletonSource, StageResult
+from tampcli.bnb.values import (
+    BnBOptions,
+    BnBResult,
+    Diagnose,
+    Evaluate,
+    Event,
+    Judged,
+    SkeletonSource,
+    StageResult,
+)
 from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
 
-__all__ = ["BOUNDING", "STAGES", "BnBOptions", "BnBResult", "Evaluate", "Event", "SkeletonSource", "StageResult",
-           "branch_and_bound"]
+__all__ = ["BOUNDING", "STAGES", "BnBOptions", "BnBResult", "Diagnose", "Evaluate", "Event", "Judged",
+           "SkeletonSource", "StageResult", "branch_and_bound"]
 
 
 
@@ -63,6 +82,7 @@ def branch_and_bound(
     clock: Callable[[], float] = time.perf_counter,
     learn: Callable[[Any], None] | None = None,
     relax: Relax | None = None,
+    diagnose: Diagnose | None = None,
 ) -> BnBResult:
     """Search skeletons best-first with staged NLP bounds; see the module docstring.
 
@@ -72,9 +92,10 @@ def branch_and_bound(
     stage (or of a prefix's keyframes), passed through untouched. `learn(result)`
     hears of every stage that failed (what geometry found in the way). `relax(ops)`
     bounds the trajectory cost of every completion of a prefix (prefix_bounds.py).
+    `diagnose(ops, result)` says more of a failed stage when there is no solution.
     """
     search = _Search(skeletons, evaluate, options or BnBOptions(), is_geometric, on_event,
-                     clock, learn, relax)
+                     clock, learn, relax, diagnose)
     return search.run()
 
 
@@ -103,6 +124,7 @@ class _Trial:
     heuristic_bound: float | None = None
     nlp_cost: float | None = None
     path_result: Any = None
+    failed: Any = None  # the result of the stage that failed
     kkt: KktStages = KktStages()  # of the stages solved so far
 
 
@@ -110,10 +132,11 @@ class _Search(StageSteps):
     """The state of one branch and bound: incumbent, records, statistics."""
 
     def __init__(self, skeletons, evaluate, options, is_geometric, on_event, clock, learn,
-                 relax):
+                 relax, diagnose=None):
         self.skeletons, self.evaluate, self.options = skeletons, evaluate, options
         self.bounds = None if relax is None else PrefixBounds(relax, is_geometric)
         self.learn = learn or (lambda result: None)
+        self.diagnose = diagnose
         self.is_geometric, self.clock = is_geometric, clock
         self.emit = on_event or (lambda event: None)
         self.w = options.symbolic_weight
@@ -121,13 +144,15 @@ class _Search(StageSteps):
         self.tree = PrefixTree()
         self.evaluated: dict[tuple[str, ...], int] = {}  # geometric actions -> rank
         self.records: list[SkeletonRecord] = []
+        self.judged: dict[tuple[str, ...], Judged] = {}
         self.stats = {"skeletons_generated": 0, "skeletons_optimized": 0,
                       "skeletons_pruned": 0, "skeletons_infeasible": 0, "nlp_solves": 0,
                       "nlp_iterations": 0, "prefixes_forbidden": 0, "optimize_seconds": 0.0,
                       "relaxed_bound_seconds": 0.0}
         self.incumbent: _Incumbent | None = None
         self.improvements: list[tuple[float, float]] = []
-        self.failures: list[tuple[int, tuple[str, ...], str, str]] = []  # rank, plan, stage, why
+        self.failures: list[Failure] = []
+        self.learned_prefixes: list[tuple[str, ...]] = []  # forbidden after a local failure
         self.deepest_feasible: tuple[str, ...] = ()
         self.all_proved_infeasible = True
         # Proved bounds (w * symbolic cost + relaxed bound) of drawn skeletons no proof excludes:
@@ -216,9 +241,12 @@ class _Search(StageSteps):
         if twin is not None:
             why = f"same geometric actions as #{twin} (differs only in symbolic-only actions)"
             proved = twin not in self.unproved_ranks
+            infeasible = False  # (its twin may still be out, in a parallel search)
         else:
             why = f"shares the infeasible prefix {' '.join(blocked)}"
             proved = bool(getattr(self.tree.get(blocked), "proved", False))
+            infeasible = True
+        self.judged[trial.names] = Judged(trial.rank, "infeasible" if infeasible else "pruned")
         if not proved:
             self._unproved(trial)
         self.records.append(SkeletonRecord(trial.rank, trial.names, trial.symbolic, "pruned",
@@ -254,6 +282,7 @@ class _Search(StageSteps):
             trial.rank, trial.names, trial.symbolic, outcome, trial.proved_bound,
             "proved" if prune.node.proved else "heuristic", None, None, None,
             self.clock() - trial.started, prune.reason))
+        self.judged[trial.names] = Judged(trial.rank, outcome)
         self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, "relaxation",
                         outcome, bound=trial.proved_bound, message=prune.reason,
                         seconds=self.elapsed()))
@@ -282,9 +311,14 @@ class _Search(StageSteps):
                                 cost=trial.nlp_cost, bound=total, seconds=self.elapsed()))
         elif trial.outcome == "infeasible":
             self.stats["skeletons_infeasible"] += 1
-            self.failures.append((trial.rank, trial.names, trial.reached, trial.reason or ""))
+            # Only the failures the reason names keep their stage's result (a diagnosis).
+            named = len(self.failures) < SHOWN
+            self.failures.append(Failure(trial.rank, trial.names, trial.reason or "",
+                                         trial.ops if named else (),
+                                         trial.failed if named else None))
         elif trial.outcome == "pruned":
             self.stats["skeletons_pruned"] += 1
+        self.judged[trial.names] = Judged(trial.rank, trial.outcome, trial.path_result)
         heuristic = trial.heuristic_bound is not None
         self.records.append(SkeletonRecord(
             trial.rank, trial.names, trial.symbolic, trial.outcome,
@@ -328,11 +362,14 @@ class _Search(StageSteps):
             return BnBResult("solved", None, best.result, best.plan, best.symbolic,
                              best.objective, proved_lb,
                              self.stats["stop"] == "optimal (proved)", self.records,
-                             self.stats, self.improvements)
+                             self.stats, self.improvements, self.judged)
         status = "limit"
         if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):
             status = "unsolvable"
-        reason = explain(stop, self.rank, self.failures, self.deepest_feasible, self.options)
+        ending = Ending(stop, self.rank, status == "unsolvable", tuple(self.learned_prefixes),
+                        getattr(self.skeletons, "scope", None))
+        reason = explain(ending, self.failures, self.deepest_feasible, self.options,
+                         self.diagnose)
         return BnBResult(status, reason, None, (), None, None, proved_lb, False, self.records,
-                         self.stats, self.improvements)
+                         self.stats, self.improvements, self.judged)
 

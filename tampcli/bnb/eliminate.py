@@ -7,6 +7,16 @@ stages like any other (a record of its own in the skeleton list). If its
 trajectory is feasible, it replaces the incumbent, whatever its objective: a
 plan with an action that can go is never the answer (the robot must not end
 holding a block it had no reason to touch). Passes repeat until nothing drops.
+
+The shorter skeleton has a lower symbolic cost than the answer, so the search
+has often drawn it already (the blocker moved away, less the move, is the
+skeleton that failed first). It is not optimized again when the search found it
+infeasible (no record: the search's says why), nor when it solved it (its path
+is taken, a record saying so); one pruned by a bound is evaluated, its record
+naming the search's: a plan with an action fewer is taken whatever its
+objective. `stats["elimination_skeletons"]` counts the records added here, after
+the search's `skeletons_generated`; `stats["elimination_skipped"]` the shorter
+skeletons known infeasible.
 """
 
 from __future__ import annotations
@@ -16,6 +26,7 @@ import time
 from collections.abc import Callable, Sequence
 from typing import Any
 
+from tampcli.bnb.values import Judged
 from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
 
@@ -27,7 +38,7 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
     """`result` (a BnBResult) with the incumbent's useless actions removed."""
     if result.status != "solved":
         return result
-    dropped = 0
+    dropped = added = skipped = 0
     changed = True
     while changed and time.perf_counter() < deadline:
         changed = False
@@ -39,16 +50,30 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
             if shorter is None:
                 continue
             shorter = tuple(shorter)
+            names = tuple(op.name for op in shorter)
+            known = result.judged.get(names)
+            if known is not None and known.outcome == "infeasible":
+                skipped += 1
+                continue
             symbolic = float(sum(op.cost for op in shorter))
             started = time.perf_counter()
-            stage, path, kkt = _last_stage(shorter, evaluate)
+            why = f"the answer less {plan[i].name} (action elimination"
+            if known is not None and known.outcome == "solved" and known.path is not None:
+                stage, path = "path", known.path
+                kkt = getattr(path, "kkt", None) or KktStages()
+                why += f"; solved as #{known.rank}, its path taken, not optimized again)"
+            else:
+                stage, path, kkt = _last_stage(shorter, evaluate)
+                why += _again(known) + ")"
             objective = None if path is None else float(path.cost) + symbolic_weight * symbolic
+            added += 1
+            rank = len(result.skeletons) + 1
             result.skeletons.append(SkeletonRecord(
-                len(result.skeletons) + 1, tuple(op.name for op in shorter), symbolic,
-                "infeasible" if path is None else "solved", symbolic_weight * symbolic,
-                "proved", stage, None if path is None else float(path.cost), objective,
-                time.perf_counter() - started,
-                f"the answer less {plan[i].name} (action elimination)", kkt))
+                rank, names, symbolic, "infeasible" if path is None else "solved",
+                symbolic_weight * symbolic, "proved", stage,
+                None if path is None else float(path.cost), objective,
+                time.perf_counter() - started, why, kkt))
+            result.judged[names] = Judged(rank, "infeasible" if path is None else "solved", path)
             if path is None:
                 continue
             dropped += len(plan) - len(shorter)
@@ -60,7 +85,17 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
             changed = True
             break
     result.stats["actions_eliminated"] = dropped
+    result.stats["elimination_skeletons"] = added
+    result.stats["elimination_skipped"] = skipped
     return result
+
+
+def _again(known: Judged | None) -> str:
+    """Why a skeleton the search drew is optimized again."""
+    if known is None:
+        return ""
+    return (f"; #{known.rank} again, {known.outcome} there with its feasibility unknown: a "
+            "plan with an action fewer is taken whatever its objective")
 
 
 def _last_stage(ops, evaluate):

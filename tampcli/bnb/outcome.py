@@ -3,6 +3,9 @@ solution, the reason."""
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+from typing import Any
+
 TIE = 1e-12  # objectives this close count as equal when a bound is compared
 
 LIMITS = {"time": "time limit", "skeletons": "skeleton limit", "first": "first solution"}
@@ -31,21 +34,71 @@ def stop_label(stop: str, objective: float | None, proved_lb: float | None,
            "heuristic prunes)"
 
 
-def explain(stop_reason, tried, failures, deepest_feasible, options) -> str:
-    """Why there is no solution: the limit, the deepest feasible keyframes, the
-    first failures."""
-    if tried == 0:
+@dataclass(frozen=True)
+class Failure:
+    """A skeleton whose stage failed: its record's words, and what `Diagnose`
+    (values.py) needs to say more of it when the search ends without a solution."""
+
+    rank: int
+    plan: tuple[str, ...]
+    why: str
+    ops: tuple[Any, ...] = ()
+    result: Any = None  # the failed stage's result
+
+
+@dataclass(frozen=True)
+class Ending:
+    """How a search without a solution ended, for `explain`."""
+
+    stop: str  # "time" | "skeletons" | "exhausted" | ...
+    tried: int  # skeletons drawn
+    proved: bool  # every failure proved (the status is then "unsolvable")
+    # Prefixes forbidden after a local NLP failure: heuristic exclusions of every
+    # skeleton starting with one.
+    learned_prefixes: tuple[tuple[str, ...], ...] = ()
+    scope: str | None = None  # which skeletons the source yields, in words
+
+
+SHOWN = 3  # failures (and learned prefixes) named in the reason
+
+
+def explain(ending: Ending, failures: list[Failure], deepest_feasible, options,
+            diagnose=None) -> str:
+    """Why there is no solution: how the search ended (a limit, or no skeleton left,
+    and whether learned prefixes, a heuristic, excluded the rest), the deepest
+    feasible keyframes, the first failures with what `diagnose` finds violated."""
+    if ending.tried == 0:
         return "no skeleton: the task is symbolically unsolvable"
-    parts = []
-    limits = {"time": f"time limit ({options.time_limit:g} s) reached",
-              "skeletons": f"skeleton limit ({options.max_skeletons}) reached",
-              "exhausted": "every skeleton was tried"}
-    parts.append(f"{limits.get(stop_reason, stop_reason)} after {tried} skeleton(s), "
-                 "none geometrically feasible")
+    parts = [_how(ending, options)]
     if deepest_feasible:
         parts.append(f"deepest feasible keyframe sequence: {' '.join(deepest_feasible)}")
-    for rank, plan, _stage, why in failures[:3]:
-        parts.append(f"#{rank} {' '.join(plan)}: {why}")
-    if len(failures) > 3:
-        parts.append(f"... and {len(failures) - 3} more")
+    for failure in failures[:SHOWN]:
+        detail = None if diagnose is None or failure.result is None else \
+            diagnose(failure.ops, failure.result)
+        parts.append(f"#{failure.rank} {' '.join(failure.plan)}: {failure.why}"
+                     + (f" [violated at the NLP's best point, by action: {detail}]"
+                        if detail else ""))
+    if len(failures) > SHOWN:
+        parts.append(f"... and {len(failures) - SHOWN} more")
     return "; ".join(parts)
+
+
+def _how(ending: Ending, options) -> str:
+    none = f"after {ending.tried} skeleton(s), none geometrically feasible"
+    if ending.stop == "time":
+        return f"time limit ({options.time_limit:g} s) reached {none}"
+    if ending.stop == "skeletons":
+        return f"skeleton limit ({options.max_skeletons}) reached {none}"
+    if ending.stop != "exhausted":
+        return f"{ending.stop} {none}"
+    prefixes = ending.learned_prefixes
+    if prefixes:
+        named = ", ".join(" ".join(p) for p in prefixes[:SHOWN])
+        more = f" and {len(prefixes) - SHOWN} more" if len(prefixes) > SHOWN else ""
+        return (f"no skeleton left {none}: every other skeleton starts with one of "
+                f"{len(prefixes)} prefix(es) forbidden after a local NLP failure ({named}{more}), "
+                "a heuristic exclusion, not a proof that no skeleton is feasible")
+    scope = f"; {ending.scope}" if ending.scope else ""
+    proof = "" if ending.proved else \
+        " (not a proof: a local NLP that finds no feasible point may have missed one)"
+    return f"every skeleton was tried ({ending.tried}{scope}), none geometrically feasible{proof}"

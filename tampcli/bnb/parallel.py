@@ -40,7 +40,7 @@ from tampcli.bnb.outcome import TIE
 from tampcli.bnb.prefix_bounds import Relax
 from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
 from tampcli.bnb.stage_steps import call_stage
-from tampcli.bnb.values import BnBOptions, BnBResult, Evaluate, Event, SkeletonSource
+from tampcli.bnb.values import BnBOptions, BnBResult, Diagnose, Evaluate, Event, SkeletonSource
 from tampcli.solution import SkeletonRecord
 
 
@@ -138,13 +138,14 @@ def parallel_branch_and_bound(
     on_event: Callable[[Event], None] | None = None,
     learn: Callable[[Any], None] | None = None,
     relax: Relax | None = None,
+    diagnose: Diagnose | None = None,
 ) -> BnBResult:
     """branch_and_bound with each skeleton's NLPs sent to `workers` (`options.jobs`
     of them); `evaluate` (in this process) serves the odd prefix
     the books lack. See the module docstring. `stats["optimize_seconds"]` is
     summed over the workers."""
     search = _ParallelSearch(skeletons, evaluate, options, is_geometric, on_event,
-                             time.perf_counter, learn, relax)
+                             time.perf_counter, learn, relax, diagnose)
     search.workers = workers
     search.stats["jobs"] = options.jobs
     return search.run()
@@ -236,6 +237,7 @@ class _ParallelSearch(_Search):
         self.all_proved_infeasible = False
         self._unproved(trial)
         self._record(trial)
+        del self.judged[trial.names]  # a crash says nothing of the plan
 
     def _drop_hopeless(self, out: deque[_Out]) -> None:
         """The incumbent is optimal among skeletons not drawn: those out that cannot

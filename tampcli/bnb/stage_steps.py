@@ -77,7 +77,7 @@ class StageSteps:
         return True
 
     def _stage_failed(self, trial, stage: str, result) -> None:
-        trial.outcome = "infeasible"
+        trial.outcome, trial.failed = "infeasible", result
         self.learn(result)
         trial.reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
         if not getattr(result, "proved", False) or result.status == "limit":
@@ -95,6 +95,7 @@ class StageSteps:
             prefix = trial.names[:failed]
             self.skeletons.forbid_prefix(prefix)
             self.stats["prefixes_forbidden"] += 1
+            self.learned_prefixes.append(prefix)
             trial.reason += f" (prefix {' '.join(prefix)} failed)"
         if stage == "keyframes" and self.options.prefix_pruning \
                 and result.status == "infeasible":
@@ -104,6 +105,7 @@ class StageSteps:
                     and hasattr(self.skeletons, "forbid_prefix"):
                 self.skeletons.forbid_prefix(prefix)
                 self.stats["prefixes_forbidden"] += 1
+                self.learned_prefixes.append(prefix)
                 trial.reason += f" (prefix {' '.join(prefix)} is infeasible)"
 
     def _keyframe_bound_prunes(self, trial, keyframe_cost: float, stage: str) -> bool:

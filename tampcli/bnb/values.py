@@ -58,12 +58,19 @@ class SkeletonSource(Protocol):
     Optional, used when present: `solved(names)` hears of each feasible
     skeleton; `lower_bound()` is a proved bound on the symbolic cost of every
     skeleton not yet drawn (needed when the source does not draw skeletons
-    in non-decreasing cost, as one that learns from failures does)."""
+    in non-decreasing cost, as one that learns from failures does); `scope`, which
+    skeletons it yields, in words (say "loopless: no symbolic state twice"), named
+    when it runs out without a solution."""
 
     def __iter__(self): ...
 
     def forbid_prefix(self, names: tuple[str, ...]) -> None: ...
 
+
+# diagnose(ops, result): more of a failed stage's result than its worst row, in words
+# (bnb/violations.py: the rows violated at the NLP's best point, by action), or None;
+# called only for the failures a search without a solution names in its reason.
+Diagnose = Callable[[tuple[Any, ...], Any], "str | None"]
 
 # evaluate(ops, stage, warm), and for the path stage once there is an incumbent,
 # evaluate(ops, "path", warm, cutoff=C): C is the trajectory cost at which the
@@ -87,6 +94,20 @@ class Event:
     message: str | None = None
 
 
+@dataclass(frozen=True)
+class Judged:
+    """What the search found of one plan, for a pass after it that meets the plan
+    again (bnb/eliminate.py: the answer less an action may be a skeleton already
+    drawn). `outcome`: "infeasible" (a stage or a relaxation failed, or a prefix it
+    starts with was found infeasible), "solved" (`path`: its path-stage result) or
+    "pruned" (by a bound, or the same geometric actions as a plan already solved:
+    nothing said of its feasibility)."""
+
+    rank: int
+    outcome: str
+    path: Any = None
+
+
 @dataclass
 class BnBResult:
     status: str  # "solved" | "unsolvable" | "limit"
@@ -100,3 +121,4 @@ class BnBResult:
     skeletons: list[SkeletonRecord] = field(default_factory=list)
     stats: dict = field(default_factory=dict)
     improvements: list[tuple[float, float]] = field(default_factory=list)  # (seconds, objective)
+    judged: dict[tuple[str, ...], Judged] = field(default_factory=dict)  # by action names

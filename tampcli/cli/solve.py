@@ -194,8 +194,10 @@ def _summary(sol, ui, args) -> None:
             + f"; skeletons {stats.get('skeletons_generated', 0)} generated, "
             f"{stats.get('skeletons_optimized', 0)} optimized, "
             f"{stats.get('skeletons_pruned', 0)} pruned, "
-            f"{stats.get('skeletons_infeasible', 0)} infeasible; "
-            f"NLP solves {stats.get('nlp_solves', 0)}")
+            f"{stats.get('skeletons_infeasible', 0)} infeasible"
+            + (f", {stats['elimination_skeletons']} more by action elimination"
+               if stats.get("elimination_skeletons") else "")
+            + f"; NLP solves {stats.get('nlp_solves', 0)}")
     if args.out:
         ui.info(f"solution: {args.out}")
 

@@ -1,0 +1,84 @@
+"""Action elimination meets skeletons the search already judged: none is optimized twice."""
+
+from collections import Counter
+from pathlib import Path
+
+from tampcli.bnb import BnBOptions, branch_and_bound
+from tampcli.bnb.eliminate import eliminate_useless
+from tampcli.pipeline import InputPaths, solve
+from tests.bnb.test_bnb import R, table_evaluator
+from tests.bnb.test_eliminate import Op, Plan
+
+ROOT = Path(__file__).resolve().parents[2]
+
+SHORT, LONG = ("(pick a)", "(place a)"), ("(pick b)", "(place b)", "(pick a)", "(place a)")
+
+
+def plans(*names):
+    """Ranked plans of unit-cost actions, in the order given."""
+    return [Plan(tuple(Op(n) for n in plan), float(len(plan))) for plan in names]
+
+
+def drop_b(ops, i):
+    """Symbolically: dropping (pick b) drops (place b) too (b is no longer held)."""
+    return ops[2:] if i == 0 and ops[0].name == "(pick b)" else None
+
+
+def test_planar_tamp_p02_evaluates_the_blocked_skeleton_once():
+    """The blocker moved away, less the move, is the skeleton that failed first: the
+    elimination pass used to optimize it again and list it twice."""
+    problem = ROOT / "problems" / "planar-tamp" / "p02.pddl"
+    solution = solve(InputPaths(str(ROOT / "domains" / "planar-tamp" / "domain.pddl"),
+                                str(problem)))
+    assert solution.status == "solved" and len(solution.plan) == 4
+    plans = Counter(record.plan for record in solution.skeletons)
+    assert max(plans.values()) == 1, plans
+    stats = solution.stats
+    assert stats["elimination_skipped"] == 1 and stats["elimination_skeletons"] == 0
+    assert len(solution.skeletons) == stats["skeletons_generated"] + \
+        stats["elimination_skeletons"]
+
+
+def test_a_shorter_skeleton_found_infeasible_is_not_evaluated_again():
+    calls = []
+    table = {(SHORT, "keyframes"): R("infeasible", worst_constraint="blocked")}
+    result = branch_and_bound(plans(SHORT, LONG), table_evaluator(table, calls),
+                              BnBOptions(prefix_pruning=False))
+    assert result.judged[SHORT].outcome == "infeasible"
+    calls.clear()
+    result = eliminate_useless(result, table_evaluator(table, calls), drop_b, 0.1,
+                               float("inf"))
+    assert calls == [] and [r.plan for r in result.skeletons] == [SHORT, LONG]
+    assert result.stats["elimination_skipped"] == 1
+    assert result.stats["actions_eliminated"] == 0
+
+
+def test_a_shorter_skeleton_solved_by_the_search_keeps_its_path():
+    """It lost on its objective; elimination takes it whatever the objective, from the
+    path the search found."""
+    table = {(SHORT, "path"): R("solved", 5.0)}
+    result = branch_and_bound(plans(SHORT, LONG), table_evaluator(table),
+                              BnBOptions(anytime=True))
+    assert [op.name for op in result.best_plan] == list(LONG)
+    calls = []
+    result = eliminate_useless(result, table_evaluator(table, calls), drop_b, 0.1,
+                               float("inf"))
+    assert calls == []
+    assert [op.name for op in result.best_plan] == list(SHORT) and result.best.cost == 5.0
+    last = result.skeletons[-1]
+    assert last.rank == 3 and last.outcome == "solved" and "solved as #1" in last.reason
+    assert result.stats["elimination_skeletons"] == 1
+
+
+def test_a_shorter_skeleton_pruned_by_a_bound_is_evaluated_and_says_why():
+    table = {(SHORT, "keyframes"): R("solved", 9.0)}
+    result = branch_and_bound(plans(LONG, SHORT), table_evaluator(table),
+                              BnBOptions())
+    assert result.judged[SHORT].outcome == "pruned"
+    calls = []
+    result = eliminate_useless(result, table_evaluator(table, calls), drop_b, 0.1,
+                               float("inf"))
+    assert (SHORT, "path") in calls
+    assert "#2 again, pruned there" in result.skeletons[-1].reason
+    assert len(result.skeletons) == result.stats["skeletons_generated"] + \
+        result.stats["elimination_skeletons"]

@@ -1,0 +1,107 @@
+"""A search without a solution says what stopped it: the rows violated at the NLP's best
+point by action (not only the worst), and whether the skeletons left were excluded by a
+heuristic (prefixes forbidden after a local failure) rather than tried."""
+
+import time
+from pathlib import Path
+
+import pytest
+
+from tampcli.bnb import BnBOptions, branch_and_bound
+from tampcli.pipeline import InputPaths, SolveOptions, Timers, _Evaluator, _Geometry, read_inputs
+from tampcli.pipeline import solve as solve_paths
+from tests.bnb.test_bnb import R, Source, table_evaluator
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def test_the_reason_names_the_prefixes_that_excluded_the_rest_and_is_no_proof():
+    src = Source([(("x", "y", "z"), 3), (("x", "y", "w"), 4)])
+    ev = table_evaluator({(("x", "y"), "keyframes"): R("infeasible", worst_constraint="ik")})
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert res.status == "limit" and res.stats["stop"] == "every skeleton tried"
+    assert ("x", "y", "w") not in src.drawn
+    assert "every skeleton was tried" not in res.reason
+    assert "1 prefix(es) forbidden after a local NLP failure (x y)" in res.reason
+    assert "not a proof" in res.reason
+
+
+def test_an_exhausted_source_says_which_skeletons_it_yields():
+    class Scoped(Source):
+        scope = "loopless: none passes a symbolic state twice"
+
+    ev = table_evaluator({(("a",), "final"): R("infeasible", worst_constraint="far")})
+    res = branch_and_bound(Scoped([(("a",), 1)]), ev, BnBOptions())
+    assert res.reason.startswith("every skeleton was tried (1; loopless: none passes")
+    assert "not a proof" in res.reason
+    proved = table_evaluator({(("a",), "final"): R("infeasible", "far", proved=True)})
+    res = branch_and_bound(Scoped([(("a",), 1)]), proved, BnBOptions())
+    assert res.status == "unsolvable" and "not a proof" not in res.reason
+
+
+def test_the_diagnosis_of_each_failure_named_comes_with_it():
+    failed = R("infeasible", worst_constraint="(pick a): tilted")
+    seen = []
+
+    def diagnose(ops, result):
+        seen.append((tuple(op.name for op in ops), result))
+        return "(pick a) tilted by 0.5 deg; (place a) collision hand vs bottle by 2 cm"
+
+    ev = table_evaluator({(("pick", "place"), "keyframes"): failed})
+    res = branch_and_bound(Source([(("pick", "place"), 2)]), ev,
+                           BnBOptions(prefix_pruning=False), diagnose=diagnose)
+    assert seen == [(("pick", "place"), failed)]
+    assert "[violated at the NLP's best point, by action: (pick a) tilted by 0.5 deg; " \
+           "(place a) collision hand vs bottle by 2 cm]" in res.reason
+    seen.clear()
+    res = branch_and_bound(Source([(("pick", "place"), 2)]), table_evaluator({}),
+                           BnBOptions(), diagnose=diagnose)
+    assert res.status == "solved" and seen == []
+
+
+def test_the_violated_rows_of_a_real_keyframe_failure_start_with_the_reported_one():
+    """blind4 p02: the target's pick, with the block 2 cm beside it, fails at the keyframes."""
+    folder = ROOT / "problems" / "blind4" / "p02"
+    inputs = read_inputs(InputPaths(str(folder / "domain.pddl"), str(folder / "p02.pddl")),
+                         Timers())
+    from tampcli.bnb.violations import violated_rows
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.world import World
+    from tampcli.optimize.grips import Kinematics
+
+    with World(inputs.scene) as world:
+        evaluate = _Evaluator(inputs, _Geometry(world, CollisionChecker(world)), SolveOptions(),
+                              time.perf_counter() + 60)
+        ops = {op.name: op for op in inputs.task.operators}
+        plan = (ops["(pick target nook)"], ops["(place target goal)"])
+        final = evaluate(plan, "final", None)
+        result = evaluate(plan, "keyframes", final)
+        assert result.status == "infeasible"
+        rows = violated_rows(evaluate._lowered(plan), result, Kinematics(world))
+        assert rows and rows[0].amount == pytest.approx(result.violation, rel=1e-6)
+        what = rows[0].words.rpartition(" by ")[0]
+        assert result.worst_constraint.startswith(f"{rows[0].step}: {what} by ")
+        assert all(a.amount >= b.amount > 1e-4 for a, b in zip(rows, rows[1:], strict=False))
+        text = evaluate.violated(plan, result)
+        assert text.startswith(f"{rows[0].step} {rows[0].words}")
+        assert evaluate.violated(plan, final) is None  # solved: nothing to say
+
+
+def test_blind4_p01_first_version_names_the_place_not_only_the_pick(tmp_path):
+    """p01 as first written: roof 48 cm up, a 15 cm bottle behind the bay. `solve` said
+    only `(pick cube counter): tool tilted by 0.5 deg`; the place's rows come with it now."""
+    folder = ROOT / "problems" / "blind4" / "p01"
+    for name in ("domain.pddl", "modes.toml", "p01.pddl"):
+        (tmp_path / name).write_text((folder / name).read_text())
+    scene = (folder / "p01.scene.toml").read_text()
+    first = scene.replace("pose = [0.58, 0.15, 0.59]", "pose = [0.58, 0.15, 0.49]") \
+        .replace("size = [0.03, 0.06]", "size = [0.03, 0.15]") \
+        .replace("pose = [0.665, 0.15, 0.18]", "pose = [0.665, 0.15, 0.225]")
+    assert first.count("0.49]") == 1 and "0.225]" in first
+    (tmp_path / "p01.scene.toml").write_text(first)
+    solution = solve_paths(InputPaths(str(tmp_path / "domain.pddl"), str(tmp_path / "p01.pddl")),
+                           SolveOptions(BnBOptions(time_limit=60)))
+    assert solution.status == "limit"
+    assert solution.reason.startswith("every skeleton was tried (1; loopless")
+    detail = solution.reason.partition("[violated at the NLP's best point, by action: ")[2]
+    assert "(pick cube counter)" in detail and "(place cube bay)" in detail, solution.reason
