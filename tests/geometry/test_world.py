@@ -308,3 +308,25 @@ def test_refixed_fingers_match_pybullet(panda):
                                            err_msg=link.name)
     finally:
         panda.set_state(panda.start)
+
+
+def test_ik_answers_a_question_asked_again_the_same_way(panda):
+    """ik.IkMemo: the same question, the same answer (a copy); an unreachable target
+    is not tried again from another seed."""
+    target = panda.tool_pose(_random_qs(panda, 1, seed=11)[0])
+    seed = np.clip(panda.start + 0.3, panda.lower, panda.upper)
+    q1, r1 = panda.ik(target, seed=seed, rng_seed=1)
+    q1[:] = 0.0  # the caller's copy: the memo keeps its own
+    q2, r2 = panda.ik(target, seed=seed, rng_seed=2)
+    q3, r3 = panda.ik(target, seed=seed, rng_seed=2)
+    assert r2 == r1 < 1e-4 and np.array_equal(q2, q3) and not np.array_equal(q2, q1)
+    np.testing.assert_allclose(panda.tool_pose(q2), target, atol=1e-3)
+    # out of reach: the second seed gets the first one's miss
+    far = transforms.pose(None, (1.5, 0.3, 0.4))
+    qa, ra = panda.ik(far, seed=panda.start, restarts=2)
+    qb, rb = panda.ik(far, seed=np.clip(panda.start - 0.4, panda.lower, panda.upper),
+                      restarts=2)
+    assert ra == rb > 0.5 and np.array_equal(qa, qb)
+    # another question is answered afresh
+    q4, r4 = panda.ik(target, seed=panda.start, rng_seed=1)
+    assert r4 < 1e-4

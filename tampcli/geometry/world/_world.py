@@ -16,7 +16,7 @@ import numpy as np
 from tampcli.geometry import transforms
 from tampcli.geometry.arms import PANDA
 from tampcli.geometry.chain import REVOLUTE
-from tampcli.geometry.ik import solve_ik
+from tampcli.geometry.ik import IkMemo
 from tampcli.geometry.scene import Scene
 from tampcli.geometry.scene_check import entry_error
 from tampcli.geometry.shapes import Shape
@@ -46,6 +46,7 @@ class World:
 
     def __init__(self, scene: Scene):
         self.scene = scene
+        self._ik = IkMemo()
         self._pb = pybullet
         self._client = pybullet.connect(pybullet.DIRECT)
         try:
@@ -246,9 +247,10 @@ class World:
         random seeds, within the joint limits. `residual` is the norm of
         [position error (m), orientation error (rad)] (position only when
         `position_only`); the caller decides whether it is small enough.
+        A question asked before gets the same answer (ik.IkMemo).
         """
-        return solve_ik(self, np.asarray(target, dtype=float), seed, position_only, iterations,
-                        restarts, tolerance, rng_seed)
+        return self._ik.ask(self, np.asarray(target, dtype=float), seed, position_only,
+                            iterations, restarts, tolerance, rng_seed)
 
     def body_pose(self, name: str) -> np.ndarray:
         """Start pose (4x4) of a scene body."""
