@@ -1,4 +1,4 @@
-"""Robustness: the problems written blind (problems/robust-*, blind2..blind4), solved and judged twice.
+"""Robustness: the problems written blind (problems/robust-*, blind2..blind5), solved and judged twice.
 
 Each problem is solved by `tampcli solve --json` in its own process (time
 limit per problem, skeleton cap high enough that time ends a search), then
@@ -55,6 +55,11 @@ BLIND4 = {"p01": ("cluttered shelf", 2), "p02": ("obstruction", 4),
           "p03": ("stacking contact", 6), "p04": ("push", 1), "p05": ("swap via buffer", 6),
           "p06": ("rotated start", 2), "p07": ("push", 1), "p08": ("narrow passage", 2)}
 
+# problems/blind5, the same layout, written against the code of 6ab3d47.
+BLIND5 = {"p01": ("long sequence", 6), "p02": ("long sequence", 8), "p03": ("cylinders", 4),
+          "p04": ("cylinders", 4), "p05": ("stacking contact", 6), "p06": ("push", 1),
+          "p07": ("reach over", 2), "p08": ("regrasp", 4)}
+
 
 def problems() -> list[tuple[str, str, str, int]]:
     """(folder, stem, class, expected actions) of every robustness problem."""
@@ -63,6 +68,7 @@ def problems() -> list[tuple[str, str, str, int]]:
     rows += [("blind2", stem, cls, n) for stem, (cls, n) in sorted(BLIND2.items())]
     rows += [("blind3", stem, cls, n) for stem, (cls, n) in sorted(BLIND3.items())]
     rows += [("blind4", stem, cls, n) for stem, (cls, n) in sorted(BLIND4.items())]
+    rows += [("blind5", stem, cls, n) for stem, (cls, n) in sorted(BLIND5.items())]
     return rows
 
 

@@ -110,7 +110,9 @@ class _TimedSkeletons:
     """Wraps the skeleton source: counts the time spent producing skeletons
     (search.learned.LearningSource: its bound and learning pass through)."""
 
-    scope = "loopless: none passes a symbolic state twice"  # what TopK(loopless=True) yields
+    # what the LearningSource below yields
+    scope = ("loopless ones, then, none being feasible, those passing a symbolic state "
+             "twice at most (a regrasp)")
 
     def __init__(self, topk, timers: Timers):
         self.topk, self.timers = topk, timers
@@ -258,7 +260,11 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
         moved = mode.bind(op.args)["object"] if mode.geometric and mode.object else None
         return frozenset({moved}) if moved in movable else frozenset()
 
-    source = LearningSource(inputs.task, make_topk, moves)
+    def make_regrasps(task):
+        return TopK(task, loopless=True, revisits=1,
+                    time_limit=max(deadline - time.perf_counter(), 1e-3))
+
+    source = LearningSource(inputs.task, make_topk, moves, make_regrasps=make_regrasps)
 
     def learn(result) -> None:
         blocker = blocker_of(getattr(result, "worst_constraint", None), movable)

@@ -89,12 +89,25 @@ class LearningSource:
     (search.topk.TopK); `moves(op)` names the bodies an operator moves.
     `loopless`: the plain enumeration passes no state twice; the compiled
     task's states tell more apart (what was moved), so its plans are held
-    to the same rule on the plain task's states."""
+    to the same rule on the plain task's states.
+
+    `make_regrasps(task)`: the ranked plans that may pass a state twice, none
+    three times (TopK's `revisits=1`), enumerated once every loopless skeleton has been
+    drawn and none was feasible: a regrasp (pick, place, pick the same object
+    again with another grip) passes the state "holding it" twice, and is the
+    only way to move an object that no single grip takes from start to goal
+    (a side grasp out of a low nook, a top grasp into a deep bin). Until then
+    `lower_bound` counts them as not drawn (each costs at least the cheapest
+    plan: its loop taken out, it is a plan)."""
 
     def __init__(self, task: Task, make_topk: Callable[[Task], object],
-                 moves: Callable[[Operator], frozenset[str]], loopless: bool = True):
+                 moves: Callable[[Operator], frozenset[str]], loopless: bool = True,
+                 make_regrasps: Callable[[Task], object] | None = None):
         self.task, self._make, self._moves = task, make_topk, moves
         self.loopless = loopless
+        self.revisits = 0  # times more than once a drawn plan may pass a state
+        self._make_regrasps = make_regrasps
+        self._cheapest = None  # the cost of the task's cheapest plan, once pulled
         self._by_name = {op.name: op for op in task.operators}
         self.blockers: frozenset[Blocker] = frozenset()
         self._compiled, self._compiled_ops = task, self._by_name
@@ -159,7 +172,27 @@ class LearningSource:
                 self._plain_queue.popleft()
         candidates = [self._plain_queue[0].cost] if self._plain_queue else []
         candidates += [cost for cost, _, _ in self._deferred[:1]]
+        if self._regrasps_may_come() and self._cheapest is not None:
+            candidates.append(self._cheapest)
         return min(candidates, default=math.inf)
+
+    def _regrasps_may_come(self) -> bool:
+        return self._make_regrasps is not None and not self._solved
+
+    def _start_regrasps(self) -> bool:
+        """Every loopless skeleton drawn, none feasible: on to those passing one state
+        twice (the loopless ones among them are skipped: considered already)."""
+        if not self._regrasps_may_come():
+            return False
+        self._make, self._make_regrasps = self._make_regrasps, None
+        self.revisits = 1
+        self._plain, self._plain_done = self._make(self.task), False
+        self._learned = self._make(self._compiled) if self.blockers else None
+        for names in self._forbidden:
+            self._plain.forbid_prefix(names)
+            if self._learned is not None:
+                self._learned.forbid_prefix(names)
+        return True
 
     def __iter__(self) -> Iterator:
         return self
@@ -171,9 +204,11 @@ class LearningSource:
             if in_a_row < MAX_DEFERRED_IN_A_ROW:
                 plan = self._next_learned() or self._next_plain()
             if plan is None:
-                if not self._deferred:
-                    raise StopIteration
-                return self._draw(heapq.heappop(self._deferred)[2])
+                if self._deferred:
+                    return self._draw(heapq.heappop(self._deferred)[2])
+                if self._start_regrasps():
+                    continue
+                raise StopIteration
             names = plan.names
             if names in self._considered:
                 continue
@@ -242,13 +277,14 @@ class LearningSource:
         return None
 
     def _loops(self, plan) -> bool:
+        """Passes a state more often than the enumeration allows (1 + `revisits`)."""
         state = self.task.init
-        seen = {state}
+        seen = {state: 1}
         for op in plan.operators:
             state = self.task.apply(state, op)
-            if state in seen:
+            seen[state] = seen.get(state, 0) + 1
+            if seen[state] > 1 + self.revisits:
                 return True
-            seen.add(state)
         return False
 
     def _plain_version(self, plan):
@@ -267,8 +303,11 @@ class LearningSource:
         if self._plain_done:
             return False
         try:
-            self._plain_queue.append(next(self._plain))
-            return True
+            plan = next(self._plain)
         except StopIteration:
             self._plain_done = True
             return False
+        if self._cheapest is None:
+            self._cheapest = plan.cost
+        self._plain_queue.append(plan)
+        return True

@@ -2,7 +2,9 @@
 
 `TopK(task)` yields every plan of the task, cheapest first: standard top-k
 (`loopless=False`, what K* computes: a plan may pass a state twice) or
-loopless (no state twice in a plan, what `solve` wants). `forbid_prefix`
+loopless (no state twice in a plan, what `solve` wants first; `revisits=1`:
+no state passed a third time, what it wants next, a regrasp being a pick, a
+place and the same pick again). `forbid_prefix`
 removes every later plan that starts with some operator names.
 
 Method. A bounded A*-like exploration (topk_graph.py) grows the explored part
@@ -101,11 +103,14 @@ class _Path:
         ops.reverse()
         return ops
 
-    def visits(self, sid: int) -> bool:
+    def visits(self, sid: int, times: int = 1) -> bool:
+        """Passes state `sid` at least `times` times."""
         node = self
         while node is not None:
             if node.sid == sid:
-                return True
+                times -= 1
+                if times == 0:
+                    return True
             node = node.parent
         return False
 
@@ -125,15 +130,17 @@ class TopK:
     """Iterator of `Plan`s in non-decreasing cost (see the module docstring)."""
 
     def __init__(self, task: Task, loopless: bool = False, time_limit: float | None = None,
-                 heuristic: Callable[[frozenset], float] | None = None):
+                 heuristic: Callable[[frozenset], float] | None = None, revisits: int = 0):
         """`time_limit`: seconds from now for all the plans together (then the
         iteration ends and `status` is "limit"). `heuristic`: any admissible
         one (default: LM-cut with landmarks, or h_max with conditional effects).
+        `revisits` (loopless only): how many times more than once a plan may pass
+        a state.
         """
         if time_limit is not None and not time_limit > 0:
             raise UsageError(f"the time limit must be positive, got {time_limit}",
                              key="--time-limit")
-        self.task, self.loopless = task, loopless
+        self.task, self.loopless, self.revisits = task, loopless, revisits
         self._start = time.perf_counter()
         self._deadline = None if time_limit is None else self._start + time_limit
         self._graph = BoundedGraph(task, heuristic or default_heuristic(task), self._check_time)
@@ -232,7 +239,7 @@ class TopK:
         def push(path: _Path, i: int) -> None:
             lst = out(path.sid)
             if self.loopless:
-                while i < len(lst) and path.visits(lst[i][4]):
+                while i < len(lst) and path.visits(lst[i][4], 1 + self.revisits):
                     i += 1
             if i < len(lst):
                 step, flag, rest, _, _ = lst[i]
