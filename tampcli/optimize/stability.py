@@ -11,8 +11,8 @@ density (DENSITY) unless the scene gives a body's `mass`.
 Beyond standing, a stacked object lines up with the body below. The final NLP
 (which only proposes placements) pulls it to that body's centre and faces
 (`align_cost`). The keyframe NLP's objective is the motion's cost alone; there
-rows keep a box that cannot turn freely on the face within ALIGN_TURN of the
-faces below (`turn_bound`, `aligned`).
+rows keep the boxes of a tower (`tower_pair`) centred and square on the box
+below, within ALIGN_SHIFT and ALIGN_TURN (`aligned`).
 """
 
 from __future__ import annotations
@@ -29,9 +29,11 @@ OVERHANG = 5e-4  # m: how far a footprint may stick out of the face in the NLPs
 # only proposes placements): per m^2 of offset, per unit of sin^2(2 yaw difference).
 ALIGN_OFFSET = 100.0
 ALIGN_YAW = 1.0
-# How far the keyframe NLP may turn a stacked box from the faces of the box below
-# (modulo a quarter turn; `turn_bound` says where).
+# How far the keyframe NLP may turn a box of a tower from the faces of the box below
+# (modulo a quarter turn) and move its centre from that box's centre (`tower_pair`
+# says where).
 ALIGN_TURN = np.radians(2.0)
+ALIGN_SHIFT = 3e-3  # m
 
 
 def point_rows(rows: RowSet, label: Label, c, c_jac: Jac, slack, S: PoseX,
@@ -127,20 +129,29 @@ def align_cost(P: PoseX, info: BodyInfo, S: PoseX, sinfo: BodyInfo) -> tuple[flo
     return cost, grad
 
 
-def turn_bound(info: BodyInfo, sinfo: BodyInfo) -> bool:
-    """Whether the keyframe NLP bounds the yaw of `info` resting on `sinfo`: both are
-    boxes and `info` does not fit on the face at every yaw (a tower of near-equal boxes,
-    which its footprint rows would let turn until its corners reach the edges). A box
-    that fits at every yaw is left free: it stands at any, and aligning it costs motion."""
+def tower_pair(info: BodyInfo, sinfo: BodyInfo) -> bool:
+    """Whether `info` resting on `sinfo` is part of a tower, which the keyframe NLP keeps
+    aligned (`aligned`): both are boxes and `info` does not fit on the face at every yaw,
+    so its footprint rows alone would let it turn until its corners reach the edges.
+    A box that fits at every yaw, and anything on or of a cylinder, is left to the
+    footprint and centre-of-mass rows: it stands wherever they allow, and lining it up
+    would cost motion."""
     if info.disk or sinfo.disk:
         return False
     return info.radius > min(sinfo.half[:2])
 
 
 def aligned(rows: RowSet, step: str, P: PoseX, S: PoseX, sinfo: BodyInfo) -> None:
-    """P's faces within ALIGN_TURN of S's, modulo a quarter turn:
-    |sin 2 (yaw_P - yaw_S)| <= sin 2 ALIGN_TURN, as two rows halved so that they read
-    in rad near zero."""
+    """P's centre within ALIGN_SHIFT of S's: (ALIGN_SHIFT^2 - |offset|^2) / (2 ALIGN_SHIFT)
+    >= 0, which reads in m near the limit and is smooth at the centre; and its faces
+    within ALIGN_TURN of S's modulo a quarter turn: |sin 2 (yaw_P - yaw_S)| <=
+    sin 2 ALIGN_TURN, as two rows halved so that they read in rad near zero."""
+    d = P.pos[:2] - S.pos[:2]
+    gp, gs = np.zeros((1, 12)), np.zeros((1, 12))
+    gp[0, 0:2], gs[0, 0:2] = -d / ALIGN_SHIFT, d / ALIGN_SHIFT
+    rows.add(np.array([(ALIGN_SHIFT ** 2 - float(d @ d)) / (2 * ALIGN_SHIFT)]),
+             add_jac(P.through(gp), S.through(gs)),
+             Label(step, f"centre off the centre of {sinfo.name}"))
     f, df_da, df_db = _sin_2turn(P, S)
     lim = np.sin(2 * ALIGN_TURN)
     gp, gs = np.zeros((2, 12)), np.zeros((2, 12))

@@ -206,10 +206,10 @@ class KeyframeWalk:
             self.pending.append((k, step.name, held, frame, frozenset(ignore), moved))
 
     def placement_rows(self, step, P: PoseX) -> None:
-        """The step's object rests at P from here on (it joins `state`), a stacked one
-        aligned with the body below (rows: the objective stays the motion's cost)."""
+        """The step's object rests at P from here on (it joins `state`), a box of a tower
+        aligned with the box below (rows: the objective stays the motion's cost)."""
         bodies = self.problem.bodies
-        if _stacked(self.problem, step) and S.turn_bound(bodies[step.obj],
+        if _stacked(self.problem, step) and S.tower_pair(bodies[step.obj],
                                                          bodies[step.support]):
             S.aligned(self.rows.ineq, step.name, P,
                       _pose_of(self.problem, step.support, self.state), bodies[step.support])

@@ -1,5 +1,5 @@
-"""A stacked box's alignment in the keyframe NLP: rows (not a pull in the objective),
-where they apply, their Jacobians against finite differences."""
+"""A tower's alignment in the keyframe NLP: rows (not a pull in the objective), where
+they apply, their Jacobians against finite differences."""
 
 import math
 
@@ -37,7 +37,7 @@ def _fd(f, x, h=1e-6):
     return np.array(cols).T
 
 
-def _turn_rows(x, pose):
+def _aligned_rows(x, pose):
     rows = RowSet()
     S.aligned(rows, "s", pose("p", x[:3]), pose("q", x[3:]), _box("q", 0.05, 0.05))
     slices = {"p": slice(0, 3), "q": slice(3, 6)}
@@ -58,10 +58,11 @@ def _linear(block, v):
 
 @pytest.mark.parametrize("pose", [_planar, _linear])
 @pytest.mark.parametrize("seed", range(5))
-def test_turn_rows_match_finite_differences(pose, seed):
+def test_aligned_rows_match_finite_differences(pose, seed):
     x = np.random.default_rng(seed).uniform(-2.0, 2.0, 6)
-    _, jac = _turn_rows(x, pose)
-    np.testing.assert_allclose(jac, _fd(lambda xx: _turn_rows(xx, pose)[0], x), atol=1e-7)
+    x[[0, 1, 3, 4]] *= 0.005  # centres a few mm apart: both sides of the limit
+    _, jac = _aligned_rows(x, pose)
+    np.testing.assert_allclose(jac, _fd(lambda xx: _aligned_rows(xx, pose)[0], x), atol=1e-7)
 
 
 @pytest.mark.parametrize("turn, inside", [(0.0, True), (1.9, True), (2.1, False), (10.0, False),
@@ -69,28 +70,40 @@ def test_turn_rows_match_finite_differences(pose, seed):
                                           (-1.9, True), (-2.1, False), (178.5, True)])
 def test_turn_rows_allow_align_turn_modulo_a_quarter_turn(turn, inside):
     base = 0.7
-    val, _ = _turn_rows(np.array([0.0, 0.0, base + math.radians(turn), 0.01, 0.0, base]),
-                        _planar)
-    assert (val.min() >= 0) == inside
+    val, _ = _aligned_rows(np.array([0.01, 0.0, base + math.radians(turn), 0.01, 0.0, base]),
+                           _planar)
+    assert val[0] == pytest.approx(S.ALIGN_SHIFT / 2)  # centred: half the limit
+    assert (val[1:].min() >= 0) == inside
     if turn == 0.0:  # the rows read in rad: the slack left on either side
-        assert val == pytest.approx([S.ALIGN_TURN] * 2, rel=1e-3)
+        assert val[1:] == pytest.approx([S.ALIGN_TURN] * 2, rel=1e-3)
 
 
-def test_only_a_box_that_cannot_turn_freely_is_bound():
+@pytest.mark.parametrize("shift, inside", [(0.0, True), (2.9e-3, True), (3.1e-3, False),
+                                           (1e-2, False)])
+def test_shift_row_allows_align_shift_in_any_direction(shift, inside):
+    for a in np.linspace(0, 2 * math.pi, 7):
+        x = np.array([shift * math.cos(a), shift * math.sin(a), 0.2, 0.0, 0.0, 0.2])
+        val, _ = _aligned_rows(x, _planar)
+        assert (val[0] >= 0) == inside
+        if 0 < shift < 5e-3:  # reads in m near the limit
+            assert val[0] == pytest.approx(S.ALIGN_SHIFT - shift, rel=0.05, abs=1e-5)
+
+
+def test_only_a_box_that_cannot_turn_freely_on_the_face_is_in_a_tower():
     cube4, cube5, cube6 = _box("a", 0.04, 0.04), _box("b", 0.05, 0.05), _box("c", 0.06, 0.06)
     platform = _box("p", 0.1, 0.1)
-    assert S.turn_bound(cube4, cube5) and S.turn_bound(cube5, cube6)  # near-equal sizes
-    assert S.turn_bound(cube5, cube5)
-    assert not S.turn_bound(cube4, cube6)  # a 4 cm cube fits a 6 cm face at every yaw
-    assert not S.turn_bound(cube6, platform)
-    assert S.turn_bound(_box("bar", 0.12, 0.02), platform)  # an oblong bar does not
-    assert not S.turn_bound(_disk("d", 0.05), cube5)
-    assert not S.turn_bound(cube4, _disk("d", 0.05))
+    assert S.tower_pair(cube4, cube5) and S.tower_pair(cube5, cube6)  # near-equal sizes
+    assert S.tower_pair(cube5, cube5)
+    assert not S.tower_pair(cube4, cube6)  # a 4 cm cube fits a 6 cm face at every yaw
+    assert not S.tower_pair(cube6, platform)
+    assert S.tower_pair(_box("bar", 0.12, 0.02), platform)  # an oblong bar does not
+    assert not S.tower_pair(_disk("d", 0.05), cube5)
+    assert not S.tower_pair(cube4, _disk("d", 0.05))
 
 
 def test_keyframe_objective_is_the_motion_alone_and_rows_bound_the_turn():
     """arm-pick-place p05's tower: the keyframe NLP's cost is the joint motion through
-    its keyframes (no pull), with two turn rows per stacked box."""
+    its keyframes (no pull), with a centre row and two turn rows per stacked box."""
     domain, scene, modes = _problem_files("arm-pick-place", "p05")
     with World(scene) as world:
         problem = lower(ops("(pick b start)", "(stack b c)", "(pick a start)", "(stack a b)"),
@@ -105,9 +118,11 @@ def test_keyframe_objective_is_the_motion_alone_and_rows_bound_the_turn():
                              world.start, collisions=False)
         qs = [np.asarray(world.start)] + [v[keyframe_block(k)]
                                           for k in range(problem.n_keyframes)]
-        motion = sum(float(np.sum((b - a) ** 2)) for a, b in zip(qs, qs[1:]))
+        motion = sum(float(np.sum((b - a) ** 2)) for a, b in zip(qs[:-1], qs[1:], strict=True))
         assert rows.cost == pytest.approx(motion / problem.options.waypoints, rel=1e-12)
-        turned = [lab for lab in rows.ineq.labels if lab.what.startswith("turned from")]
-        assert [(lab.step, lab.what) for lab in turned[::2]] == [
-            (problem.steps[1].name, "turned from the faces of c"),
-            (problem.steps[3].name, "turned from the faces of b")]
+        labels = [(lab.step, lab.what) for lab in rows.ineq.labels
+                  if lab.what.startswith(("turned from", "centre off the centre"))]
+        assert labels == [(problem.steps[i].name, what.format(s)) for i, s in ((1, "c"), (3, "b"))
+                          for what in ("centre off the centre of {}",
+                                       "turned from the faces of {}",
+                                       "turned from the faces of {}")]
