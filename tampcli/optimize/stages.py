@@ -209,8 +209,9 @@ class KeyframeWalk:
         """The step's object rests at P from here on (it joins `state`), a box of a tower
         aligned with the box below (rows: the objective stays the motion's cost)."""
         bodies = self.problem.bodies
-        if _stacked(self.problem, step) and S.tower_pair(bodies[step.obj],
-                                                         bodies[step.support]):
+        # The planar robot keeps the yaw of what it moves: not its to line up.
+        if not self.planar and _stacked(self.problem, step) and S.tower_pair(
+                bodies[step.obj], bodies[step.support]):
             S.aligned(self.rows.ineq, step.name, P,
                       _pose_of(self.problem, step.support, self.state), bodies[step.support])
         _placement_rows(self.rows, self.problem, step, P, self.state, self.heights,
