@@ -7,6 +7,12 @@ that face, inset by STABLE_MARGIN of the smaller of the two bodies' half
 extents along each axis of the face. A placement also loads every body under
 its support, so the same row is written for each of them. Mass is uniform
 density (DENSITY) unless the scene gives a body's `mass`.
+
+Beyond standing, a stacked object lines up with the body below. The final NLP
+(which only proposes placements) pulls it to that body's centre and faces
+(`align_cost`). The keyframe NLP's objective is the motion's cost alone; there
+rows keep the boxes of a tower (`tower_pair`) centred and square on the box
+below, within ALIGN_SHIFT and ALIGN_TURN (`aligned`).
 """
 
 from __future__ import annotations
@@ -19,12 +25,15 @@ from tampcli.optimize.expr import Jac, Label, PoseX, RowSet, add_jac
 
 STABLE_MARGIN = 0.2  # the centre of mass stays this fraction of a half extent inside the face
 OVERHANG = 5e-4  # m: how far a footprint may stick out of the face in the NLPs
-# The pull of a stacked object to the body below, in both NLPs' objective: per m^2 of
-# offset, and per unit of sin^2(2 yaw difference). Measured on arm-pick-place p05: with
-# 1e-2 for both, the keyframe NLP turned b 8 degrees on c (turning the wrist less is
-# cheaper in joint motion), with (10, 0.1) 7 degrees; with these 1 degree, 2.6 mm.
+# The pull of a stacked object to the body below, in the final NLP's objective (which
+# only proposes placements): per m^2 of offset, per unit of sin^2(2 yaw difference).
 ALIGN_OFFSET = 100.0
 ALIGN_YAW = 1.0
+# How far the keyframe NLP may turn a box of a tower from the faces of the box below
+# (modulo a quarter turn) and move its centre from that box's centre (`tower_pair`
+# says where).
+ALIGN_TURN = np.radians(2.0)
+ALIGN_SHIFT = 3e-3  # m
 
 
 def point_rows(rows: RowSet, label: Label, c, c_jac: Jac, slack, S: PoseX,
@@ -93,8 +102,18 @@ def com_on_face(rows: RowSet, step: str, load: list, base: BodyInfo, S: PoseX,
     point_rows(rows, label, c, c_jac, (-inset[0], -inset[1]), S, sinfo)
 
 
+def _sin_2turn(P: PoseX, S: PoseX):
+    """(sin 2 (yaw_P - yaw_S), its gradient w.r.t. P.ax[:2], w.r.t. S.ax[:2]): zero
+    when the faces are parallel, modulo a quarter turn."""
+    a, b = P.ax[:2], S.ax[:2]
+    s, c = b[0] * a[1] - b[1] * a[0], b @ a
+    df_da = 2 * c * np.array([-b[1], b[0]]) + 2 * s * b
+    df_db = 2 * c * np.array([a[1], -a[0]]) + 2 * s * a
+    return 2 * s * c, df_da, df_db
+
+
 def align_cost(P: PoseX, info: BodyInfo, S: PoseX, sinfo: BodyInfo) -> tuple[float, Jac]:
-    """A small pull of a stacked object to its support's centre and faces:
+    """The final NLP's pull of a stacked object to its support's centre and faces:
     ALIGN_OFFSET |offset|^2 + ALIGN_YAW sin^2(2 yaw difference) (no yaw term for disks).
     Returns (cost, d cost / d blocks (size,))."""
     d = P.pos[:2] - S.pos[:2]
@@ -102,16 +121,44 @@ def align_cost(P: PoseX, info: BodyInfo, S: PoseX, sinfo: BodyInfo) -> tuple[flo
     cost = ALIGN_OFFSET * float(d @ d)
     gp[0:2], gs[0:2] = 2 * ALIGN_OFFSET * d, -2 * ALIGN_OFFSET * d
     if not (info.disk or sinfo.disk):
-        a, b = P.ax[:2], S.ax[:2]
-        s, c = b[0] * a[1] - b[1] * a[0], b @ a
-        f = 2 * s * c  # sin 2(yaw_P - yaw_S)
+        f, df_da, df_db = _sin_2turn(P, S)
         cost += ALIGN_YAW * f * f
-        df_ds, df_dc = 2 * c, 2 * s
-        w = 2 * ALIGN_YAW * f
-        gp[3:5] += w * (df_ds * np.array([-b[1], b[0]]) + df_dc * b)
-        gs[3:5] += w * (df_ds * np.array([a[1], -a[0]]) + df_dc * a)
+        gp[3:5] += 2 * ALIGN_YAW * f * df_da
+        gs[3:5] += 2 * ALIGN_YAW * f * df_db
     grad = add_jac({k: gp @ j for k, j in P.jac.items()}, {k: gs @ j for k, j in S.jac.items()})
     return cost, grad
+
+
+def tower_pair(info: BodyInfo, sinfo: BodyInfo) -> bool:
+    """Whether `info` resting on `sinfo` is part of a tower, which the keyframe NLP keeps
+    aligned (`aligned`): both are boxes and `info` does not fit on the face at every yaw,
+    so its footprint rows alone would let it turn until its corners reach the edges.
+    A box that fits at every yaw, and anything on or of a cylinder, is left to the
+    footprint and centre-of-mass rows: it stands wherever they allow, and lining it up
+    would cost motion."""
+    if info.disk or sinfo.disk:
+        return False
+    return info.radius > min(sinfo.half[:2])
+
+
+def aligned(rows: RowSet, step: str, P: PoseX, S: PoseX, sinfo: BodyInfo) -> None:
+    """P's centre within ALIGN_SHIFT of S's: (ALIGN_SHIFT^2 - |offset|^2) / (2 ALIGN_SHIFT)
+    >= 0, which reads in m near the limit and is smooth at the centre; and its faces
+    within ALIGN_TURN of S's modulo a quarter turn: |sin 2 (yaw_P - yaw_S)| <=
+    sin 2 ALIGN_TURN, as two rows halved so that they read in rad near zero."""
+    d = P.pos[:2] - S.pos[:2]
+    gp, gs = np.zeros((1, 12)), np.zeros((1, 12))
+    gp[0, 0:2], gs[0, 0:2] = -d / ALIGN_SHIFT, d / ALIGN_SHIFT
+    rows.add(np.array([(ALIGN_SHIFT ** 2 - float(d @ d)) / (2 * ALIGN_SHIFT)]),
+             add_jac(P.through(gp), S.through(gs)),
+             Label(step, f"centre off the centre of {sinfo.name}"))
+    f, df_da, df_db = _sin_2turn(P, S)
+    lim = np.sin(2 * ALIGN_TURN)
+    gp, gs = np.zeros((2, 12)), np.zeros((2, 12))
+    gp[0, 3:5], gs[0, 3:5] = -0.5 * df_da, -0.5 * df_db
+    gp[1, 3:5], gs[1, 3:5] = 0.5 * df_da, 0.5 * df_db
+    rows.add(np.array([0.5 * (lim - f), 0.5 * (lim + f)]), add_jac(P.through(gp), S.through(gs)),
+             Label(step, f"turned from the faces of {sinfo.name}", "rad"))
 
 
 # ---------------------------------------------------------------- verify

@@ -101,13 +101,6 @@ def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: d
         if oinfo.fixed and other != step.support and vertical_overlap(
                 z, info.half[2], oinfo.pose[2], oinfo.half[2]):
             C.apart(rows.ineq, name, P, info, constant_pose(*oinfo.pose), oinfo, other)
-    if _stacked(problem, step):
-        # Part of both NLPs' objective (docs/formats.md, "Stacking and stability").
-        cost, grad = S.align_cost(P, info, _pose_of(problem, step.support, state),
-                                  problem.bodies[step.support])
-        rows.cost += cost
-        for k, g in grad.items():
-            rows.cost_grad[k] = rows.cost_grad.get(k, 0.0) + g
     state[step.obj] = P
     heights[step.obj] = z
     supports[step.obj] = step.support
@@ -138,6 +131,7 @@ class FinalWalk:
         x, y, yaw = self.vals[block]
         P = planar_pose(block, x, y, step.rest_z, yaw)
         stacked = _stacked(self.problem, step)
+        support = _pose_of(self.problem, step.support, self.state) if stacked else None
         _placement_rows(self.rows, self.problem, step, P, self.state, self.heights,
                         self.supports)
         if np.isfinite(self.reach):
@@ -146,7 +140,13 @@ class FinalWalk:
             # The planar robot does not turn what it carries or pushes.
             C.same_yaw(self.rows.eq, step.name, P, self.last[step.obj])
         self.last[step.obj] = P
-        if not stacked:
+        if stacked:
+            cost, grad = S.align_cost(P, self.problem.bodies[step.obj], support,
+                                      self.problem.bodies[step.support])
+            self.rows.cost += cost
+            for k, g in grad.items():
+                self.rows.cost_grad[k] = self.rows.cost_grad.get(k, 0.0) + g
+        else:
             d = np.array([x, y]) - self.origins[step.index]
             self.rows.cost += PULL * float(d @ d)
             self.rows.cost_grad[block] = np.array([2 * PULL * d[0], 2 * PULL * d[1], 0.0])
@@ -206,7 +206,14 @@ class KeyframeWalk:
             self.pending.append((k, step.name, held, frame, frozenset(ignore), moved))
 
     def placement_rows(self, step, P: PoseX) -> None:
-        """The step's object rests at P from here on (it joins `state`)."""
+        """The step's object rests at P from here on (it joins `state`), a box of a tower
+        aligned with the box below (rows: the objective stays the motion's cost)."""
+        bodies = self.problem.bodies
+        # The planar robot keeps the yaw of what it moves: not its to line up.
+        if not self.planar and _stacked(self.problem, step) and S.tower_pair(
+                bodies[step.obj], bodies[step.support]):
+            S.aligned(self.rows.ineq, step.name, P,
+                      _pose_of(self.problem, step.support, self.state), bodies[step.support])
         _placement_rows(self.rows, self.problem, step, P, self.state, self.heights,
                         self.supports)
         if step.index in self.anchors:
