@@ -180,8 +180,8 @@ def test_collision_rows_at_active_contacts(wall):
 
 
 def test_keyframe_rows_stacking_on_a_moved_cube():
-    """Stacking on a support the skeleton moved (footprint, centre of mass, alignment
-    cost), and rows that depend on two keyframes."""
+    """Stacking on a support the skeleton moved (footprint, centre of mass, the tower
+    pair's alignment rows), and rows that depend on two keyframes."""
     from tampcli.geometry.scene import load_scene
     from tampcli.geometry.world import World
     from tampcli.optimize.modes import load_modes

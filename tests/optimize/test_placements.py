@@ -373,9 +373,9 @@ def test_planar_bay_packing_keeps_yaws_and_reaches_its_keyframes():
 
 
 def test_library_tower_trajectory_keeps_it_aligned():
-    """The keyframe NLP chooses the placements again (through the tool): the alignment
-    pull is in its objective too (before: b turned 8 degrees on c, a 16 on b; the tower
-    fell in a physics replay)."""
+    """The keyframe NLP chooses the placements again (through the tool): a tower pair
+    keeps to its alignment rows there too (before any: b turned 8 degrees on c, a 16
+    on b; the tower fell in a physics replay)."""
     from tampcli.geometry import transforms
     from tampcli.optimize.verify import verify
 
