@@ -6,6 +6,8 @@ from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from tampcli.geometry.scene import load_scene as _load_scene
 from tampcli.optimize.modes import load_modes as _load_modes
 from tampcli.pddl import parser
@@ -61,3 +63,13 @@ def lowered_folder(folder: Path, stem: str, skeleton):
     with World(scene) as world:
         yield lower(skeleton, scene, modes, world, OptimizeOptions(), domain=domain,
                     checker=CollisionChecker(world))
+
+
+def central_differences(f, x, h: float = 1e-6) -> np.ndarray:
+    """The Jacobian of f (vector -> vector) at x by central differences, (m, n)."""
+    cols = []
+    for i in range(len(x)):
+        e = np.zeros_like(x)
+        e[i] = h
+        cols.append((f(x + e) - f(x - e)) / (2 * h))
+    return np.array(cols).T

@@ -16,16 +16,7 @@ from tampcli.optimize.problem import lower
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
 from tampcli.optimize.values import placement_blocks
 
-from .helpers import ops
-
-
-def _fd(f, x, h):
-    cols = []
-    for i in range(len(x)):
-        e = np.zeros_like(x)
-        e[i] = h
-        cols.append((f(x + e) - f(x - e)) / (2 * h))
-    return np.array(cols).T
+from .helpers import central_differences, ops
 
 
 def _check(rows_fn, layout, x, h=1e-6, tol=1e-5):
@@ -43,12 +34,12 @@ def _check(rows_fn, layout, x, h=1e-6, tol=1e-5):
 
     cost, grad, eq, jeq, ineq, jin = parts(x)
     assert len(eq) + len(ineq) > 0
-    fd_cost = _fd(lambda xx: np.array([parts(xx)[0]]), x, h)[0]
+    fd_cost = central_differences(lambda xx: np.array([parts(xx)[0]]), x, h)[0]
     np.testing.assert_allclose(grad, fd_cost, atol=tol)
     if len(eq):
-        np.testing.assert_allclose(jeq, _fd(lambda xx: parts(xx)[2], x, h), atol=tol)
+        np.testing.assert_allclose(jeq, central_differences(lambda xx: parts(xx)[2], x, h), atol=tol)
     if len(ineq):
-        np.testing.assert_allclose(jin, _fd(lambda xx: parts(xx)[4], x, h), atol=tol)
+        np.testing.assert_allclose(jin, central_differences(lambda xx: parts(xx)[4], x, h), atol=tol)
     return eq, ineq
 
 
@@ -76,7 +67,7 @@ def test_held_pose_jacobians(wall, kind, t):
 
     h = held_pose(kin.frame(q), grip, t)
     analytic = np.vstack([h.dpos_dq, h.daxes_dq[:, 0], h.daxes_dq[:, 1], h.daxes_dq[:, 2]])
-    np.testing.assert_allclose(analytic, _fd(lambda qq: value(qq, t), q, 1e-6), atol=1e-6)
+    np.testing.assert_allclose(analytic, central_differences(lambda qq: value(qq, t), q, 1e-6), atol=1e-6)
     dt = np.concatenate([h.dpos_dt, h.daxes_dt[:, 0], h.daxes_dt[:, 1], h.daxes_dt[:, 2]])
     fd_t = (value(q, t + 1e-6) - value(q, t - 1e-6)) / 2e-6
     np.testing.assert_allclose(dt, fd_t, atol=1e-6)

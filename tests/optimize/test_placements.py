@@ -22,20 +22,12 @@ from tampcli.optimize.solve import solve
 from tampcli.optimize.values import Placement
 from tampcli.pddl import parser
 
-from .helpers import ROOT, ops
+from .helpers import ROOT, central_differences, ops
 
 BOX = BodyInfo("p", "box", (0.05, 0.03, 0.02), False, (0, 0, 0, 0), True, 1.0)
 BOX2 = BodyInfo("q", "box", (0.04, 0.045, 0.02), False, (0, 0, 0, 0), True, 2.0)
 DISK = BodyInfo("d", "cylinder", (0.03, 0.03, 0.02), False, (0, 0, 0, 0), True, 1.5)
 
-
-def _fd(f, x, h=1e-6):
-    cols = []
-    for i in range(len(x)):
-        e = np.zeros_like(x)
-        e[i] = h
-        cols.append((f(x + e) - f(x - e)) / (2 * h))
-    return np.array(cols).T
 
 
 def _rows_check(build, x):
@@ -52,7 +44,7 @@ def _rows_check(build, x):
         return val, jac, cost
 
     val, jac, _ = parts(x)
-    np.testing.assert_allclose(jac, _fd(lambda xx: parts(xx)[0], x), atol=1e-6)
+    np.testing.assert_allclose(jac, central_differences(lambda xx: parts(xx)[0], x), atol=1e-6)
     return val
 
 
@@ -126,7 +118,7 @@ def test_stacking_rows_and_cost_match_finite_differences(support):
 
     _, grad = cost(x)
     g = np.concatenate([grad["p0"], grad["p1"]])
-    np.testing.assert_allclose(g, _fd(lambda xx: np.array([cost(xx)[0]]), x)[0], atol=1e-7)
+    np.testing.assert_allclose(g, central_differences(lambda xx: np.array([cost(xx)[0]]), x)[0], atol=1e-7)
 
 
 # ---------------------------------------------------------------- whole problems

@@ -16,7 +16,7 @@ from tampcli.optimize.layout import keyframe_block
 from tampcli.optimize.problem import lower
 from tampcli.optimize.stages import keyframe_layout, keyframe_rows
 
-from .helpers import ops
+from .helpers import central_differences, ops
 from .test_placements import _problem_files
 
 
@@ -27,14 +27,6 @@ def _box(name, a, b):
 def _disk(name, d):
     return BodyInfo(name, "cylinder", (d / 2, d / 2, 0.02), False, (0, 0, 0, 0), True, 1.0)
 
-
-def _fd(f, x, h=1e-6):
-    cols = []
-    for i in range(len(x)):
-        e = np.zeros_like(x)
-        e[i] = h
-        cols.append((f(x + e) - f(x - e)) / (2 * h))
-    return np.array(cols).T
 
 
 def _aligned_rows(x, pose):
@@ -62,7 +54,7 @@ def test_aligned_rows_match_finite_differences(pose, seed):
     x = np.random.default_rng(seed).uniform(-2.0, 2.0, 6)
     x[[0, 1, 3, 4]] *= 0.005  # centres a few mm apart: both sides of the limit
     _, jac = _aligned_rows(x, pose)
-    np.testing.assert_allclose(jac, _fd(lambda xx: _aligned_rows(xx, pose)[0], x), atol=1e-7)
+    np.testing.assert_allclose(jac, central_differences(lambda xx: _aligned_rows(xx, pose)[0], x), atol=1e-7)
 
 
 @pytest.mark.parametrize("turn, inside", [(0.0, True), (1.9, True), (2.1, False), (10.0, False),
