@@ -187,3 +187,20 @@ def test_scene_table_shows_mesh_files_and_scale(cli, tmp_path):
     body = json.loads(cli("check", tmp_path / "domain.pddl", tmp_path / "p01.pddl",
                           "--json").out)["scene"]["bodies"][-1]
     assert (body["file"], body["scale"]) == (duck, [0.1, 0.1, 0.1])
+
+
+def test_a_robot_starting_within_the_margin_of_a_body_is_warned_of(cli, tmp_path):
+    """blind5 p07 as first written: the KUKA's palm 1.3 mm from a partition."""
+    folder = ROOT / "problems" / "blind5" / "p07"
+    for f in folder.iterdir():
+        shutil.copy(f, tmp_path / f.name)
+    scene = tmp_path / "p07.scene.toml"
+    text = scene.read_text()
+    assert "start = [-0.8, 0.6," in text
+    scene.write_text(text.replace("start = [-0.8, 0.6,", "start = [0.0, 0.6,"))
+    run = cli("check", tmp_path / "domain.pddl", tmp_path / "p07.pddl")
+    assert run.code == 0, run.err
+    assert "warning: the robot starts 1.3 mm from partition (gripper_palm): closer than " \
+           "solve's 10 mm margin" in run.err
+    clear = cli("check", folder / "domain.pddl", folder / "p07.pddl")
+    assert "the robot starts" not in clear.err
