@@ -101,22 +101,20 @@ def hull_points(shape, center, rot, half) -> np.ndarray:
     return corners @ rot.T + center
 
 
-def padded(point_sets: list[np.ndarray]) -> np.ndarray:
-    """(k, V, 3): point sets padded to one length by repeating their first point."""
-    size = max((len(p) for p in point_sets), default=1)
-    out = np.empty((len(point_sets), size, 3))
-    for i, p in enumerate(point_sets):
-        out[i, :len(p)] = p
-        out[i, len(p):] = p[0]
-    return out
+def groups(index: np.ndarray) -> list[np.ndarray]:
+    """The positions of equal values of `index`, one array per value (ascending)."""
+    order = np.argsort(index, kind="stable")
+    return np.split(order, np.flatnonzero(np.diff(index[order])) + 1) if len(order) else []
 
 
-def hull_gaps(frames_a, points_a, ra, frames_b, points_b, rb, ca, cb) -> np.ndarray:
+def hull_gaps(table_a, index_a, frames_a, ra, ha, table_b, index_b, frames_b, rb, hb, ca,
+              cb) -> np.ndarray:
     """(k,) lower bounds on the distances between k pairs of solids given by points.
 
-    frames (k, 4, 4) of the owners; points (k, V, 3) in the owner frames; ra, rb
-    (k, 3, 3) world axes of the pair's oriented boxes and ca, cb their centres,
-    which give the directions tried (as in `gaps`).
+    Side a of pair t is the hull of table_a[index_a[t]] ((V, 3) points in the
+    owner frame) placed by frames_a[t] (4, 4), with the oriented box (`fit`)
+    of centre ca[t], axes ra[t] (3, 3) and half extents ha[t]; likewise b. The
+    directions tried are those of `gaps`.
     """
     d = cb - ca
     norm = np.linalg.norm(d, axis=1, keepdims=True)
@@ -124,17 +122,45 @@ def hull_gaps(frames_a, points_a, ra, frames_b, points_b, rb, ca, cb) -> np.ndar
     axes = np.concatenate([ra.transpose(0, 2, 1), rb.transpose(0, 2, 1), line[:, None, :]],
                           axis=1)  # (k, 7, 3)
     axes = axes * np.where(np.einsum("kai,ki->ka", axes, d) < 0, -1.0, 1.0)[:, :, None]
-    top_a = reach(frames_a, points_a, axes)
-    top_b = reach(frames_b, points_b, -axes)
+    # A box from `fit` touches its points on each face: on its own axes a solid's
+    # support is its box's, and only the other 4 directions need its points.
+    top_a = np.empty(axes.shape[:2])
+    top_a[:, :3] = np.einsum("kai,ki->ka", axes[:, :3], ca) + ha
+    top_a[:, 3:] = reach(table_a, index_a, frames_a[:, :3, :3], frames_a[:, :3, 3], axes[:, 3:])
+    top_b = np.empty(axes.shape[:2])
+    top_b[:, 3:6] = hb - np.einsum("kai,ki->ka", axes[:, 3:6], cb)
+    top_b[:, _OTHER_B] = reach(table_b, index_b, frames_b[:, :3, :3], frames_b[:, :3, 3],
+                               -axes[:, _OTHER_B])
     return (-(top_a + top_b)).max(axis=1)
 
 
-def reach(frames, points, axes) -> np.ndarray:
-    """(k, m): max over each solid's points of u . x, for its m world directions u.
+_OTHER_B = [0, 1, 2, 6]  # the directions of `hull_gaps` that are not b's own axes
 
-    frames (k, 4, 4) of the owners, points (k, V, 3) in them, axes (k, m, 3).
+
+def reach(table, index, rot, pos, axes) -> np.ndarray:
+    """(k, m): max over solid t's points of u . x, for its m world directions u.
+
+    Solid t is the point set table[index[t]] ((V, 3), its own frame) at rotation
+    rot[t] (3, 3) and position pos[t] (3,); axes (k, m, 3). The solids are taken
+    by point set, one matrix product per set: sets differ in size (a Panda link
+    has 102 to 260 hull points), and padding them to one size and gathering a copy
+    per pair cost more than the products. The products are in the points' dtype.
     """
-    rot, pos = frames[:, :3, :3], frames[:, :3, 3]
-    local = np.matmul(axes, rot)  # (k, 7, 3): directions in the owner frames
-    return np.matmul(local, points.transpose(0, 2, 1)).max(axis=2) + np.einsum(
-        "kai,ki->ka", axes, pos)
+    k, m = axes.shape[:2]
+    # (k, m, 3): directions in the solids' frames
+    local = np.matmul(axes, rot).astype(table[0].dtype if len(table) else float, copy=False)
+    out = np.empty((k, m))
+    for rows in groups(index):
+        points = table[index[rows[0]]]
+        out[rows] = (local[rows].reshape(-1, 3) @ points.T).max(axis=1).reshape(-1, m)
+    return out + np.einsum("kai,ki->ka", axes, pos)
+
+
+def support_points(table, index, rot, pos, u) -> np.ndarray:
+    """(k, 3): a world point of solid t (as in `reach`) maximizing u[t] . x; u (k, 3)."""
+    local = np.einsum("ki,kij->kj", u, rot)
+    out = np.empty((len(u), 3))
+    for rows in groups(index):
+        points = table[index[rows[0]]]
+        out[rows] = points[(local[rows] @ points.T).argmax(axis=1)]
+    return np.einsum("kij,kj->ki", rot, out) + pos
