@@ -38,10 +38,9 @@ class PartTable:
     obb_half: np.ndarray  # (P, 3)
     sphere: np.ndarray  # (P, 3) bounding-sphere centres, owner frames
     radius: np.ndarray  # (P,)
-    hulls: tuple[np.ndarray, ...]  # (V, 3) owner-frame points whose hull holds each solid
-    hulls32: tuple[np.ndarray, ...]  # the same in float32, for the screen
+    hulls32: obb.PointSets  # owner-frame points whose hull holds each solid, float32
     slack: np.ndarray  # (P,) m, more than float32's error on a hull point's projection
-    vertices: tuple  # (V, 3) a polytope's vertices in its shape frame; None if curved
+    vertices: obb.PointSets  # each polytope's vertices in its shape frame (certify.py)
     local: np.ndarray  # (P, 4, 4) shape frames in the owner frames
     identity: bool  # every shape frame is its owner's frame
     polytope: np.ndarray  # (P,) the solid is the hull of `vertices`
@@ -60,11 +59,10 @@ class PartTable:
                    np.array([p.obb_half for p in parts]).reshape(-1, 3),
                    np.array([s.center for s in shapes]).reshape(-1, 3),
                    np.array([s.radius for s in shapes], dtype=float),
-                   tuple(p.hull for p in parts),
-                   tuple(p.hull.astype(np.float32) for p in parts),
+                   obb.PointSets([p.hull for p in parts], np.float32),
                    np.array([FLOAT32_ERROR * (1.0 + np.linalg.norm(p.hull, axis=1).max())
                              for p in parts]),
-                   tuple(s.vertices for s in shapes),
+                   obb.PointSets([s.vertices for s in shapes]),
                    np.array([s.local for s in shapes]).reshape(-1, 4, 4),
                    all(p.identity_local for p in parts),
                    np.array([s.vertices is not None for s in shapes], dtype=bool),

@@ -27,12 +27,12 @@ _WORLD_AXES = np.vstack([np.eye(3), -np.eye(3)])
 class Solids:
     """One side of k pairs of polytopes in the world.
 
-    Solid t is the hull of vertices[index[t]] ((V, 3), its shape frame) at
-    rotation rot[t] and position pos[t]; box[t] says it is a box (whose face
-    normals are candidate directions).
+    Solid t is the hull of point set index[t] of `vertices` (obb.PointSets, in
+    its shape frame) at rotation rot[t] and position pos[t]; box[t] says it is a
+    box (whose face normals are candidate directions).
     """
 
-    vertices: tuple
+    vertices: obb.PointSets
     index: np.ndarray  # (k,)
     rot: np.ndarray  # (k, 3, 3)
     pos: np.ndarray  # (k, 3)

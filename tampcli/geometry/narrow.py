@@ -113,7 +113,13 @@ def _core_distance(request, a: Placed, oa, b: Placed, ob):
         exact = prism.distance(a, b)
         if exact is not None:
             return exact
-    raw = None if no_fcl(a, b) else fcl_distance(request, a, oa, b, ob)
+    return certified(None if no_fcl(a, b) else fcl_distance(request, a, oa, b, ob), a, b)
+
+
+def certified(raw, a: Placed, b: Placed):
+    """The certified answer from FCL's raw one (distance, witness on a, witness on b;
+    None if FCL was not asked or threw): kept when the quick check (the gap on its
+    normal) passes, otherwise `checked`."""
     if raw is not None:
         d, p1, p2 = raw
         normal = fcl_normal(d, p1, p2)

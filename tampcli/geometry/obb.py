@@ -101,18 +101,43 @@ def hull_points(shape, center, rot, half) -> np.ndarray:
     return corners @ rot.T + center
 
 
+GROUPED_FROM = 32  # solids from which `reach` takes them set by set (measured)
+
+
+class PointSets:
+    """The point sets (V_i, 3) of several solids, each in its own frame, as `reach`
+    takes them: one array per set, and all of them padded to one size by repeating
+    their first point (which changes no maximum). A solid given no points (None: a
+    curved one, never to be asked) gets the origin."""
+
+    __slots__ = ("sets", "padded")
+
+    def __init__(self, sets, dtype=float):
+        self.sets = tuple(np.zeros((1, 3), dtype=dtype) if p is None
+                          else np.asarray(p, dtype=dtype) for p in sets)
+        size = max((len(p) for p in self.sets), default=1)
+        self.padded = np.empty((len(self.sets), size, 3), dtype=dtype)
+        for i, p in enumerate(self.sets):
+            self.padded[i, :len(p)] = p
+            self.padded[i, len(p):] = p[0]
+
+
 def groups(index: np.ndarray) -> list[np.ndarray]:
-    """The positions of equal values of `index`, one array per value (ascending)."""
+    """The positions of equal values of `index`, one array per value (ascending).
+
+    Sliced by hand: np.split costs ~70 us a call in its Python-level axis swaps.
+    """
     order = np.argsort(index, kind="stable")
-    return np.split(order, np.flatnonzero(np.diff(index[order])) + 1) if len(order) else []
+    cuts = [0, *(np.flatnonzero(np.diff(index[order])) + 1).tolist(), len(order)]
+    return [order[lo:hi] for lo, hi in zip(cuts[:-1], cuts[1:], strict=True) if hi > lo]
 
 
 def hull_gaps(table_a, index_a, frames_a, ra, ha, table_b, index_b, frames_b, rb, hb, ca,
               cb) -> np.ndarray:
     """(k,) lower bounds on the distances between k pairs of solids given by points.
 
-    Side a of pair t is the hull of table_a[index_a[t]] ((V, 3) points in the
-    owner frame) placed by frames_a[t] (4, 4), with the oriented box (`fit`)
+    Side a of pair t is the hull of the point set index_a[t] of table_a
+    (`PointSets`, owner frames) placed by frames_a[t] (4, 4), with the oriented box (`fit`)
     of centre ca[t], axes ra[t] (3, 3) and half extents ha[t]; likewise b. The
     directions tried are those of `gaps`.
     """
@@ -137,30 +162,39 @@ def hull_gaps(table_a, index_a, frames_a, ra, ha, table_b, index_b, frames_b, rb
 _OTHER_B = [0, 1, 2, 6]  # the directions of `hull_gaps` that are not b's own axes
 
 
-def reach(table, index, rot, pos, axes) -> np.ndarray:
+def reach(points: PointSets, index, rot, pos, axes) -> np.ndarray:
     """(k, m): max over solid t's points of u . x, for its m world directions u.
 
-    Solid t is the point set table[index[t]] ((V, 3), its own frame) at rotation
-    rot[t] (3, 3) and position pos[t] (3,); axes (k, m, 3). The solids are taken
-    by point set, one matrix product per set: sets differ in size (a Panda link
-    has 102 to 260 hull points), and padding them to one size and gathering a copy
-    per pair cost more than the products. The products are in the points' dtype.
+    Solid t is point set index[t] of `points` at rotation rot[t] (3, 3) and
+    position pos[t] (3,); axes (k, m, 3). The products are in the points' dtype.
+    Many solids are taken set by set, one matrix product per set: sets differ in
+    size (a Panda link has 102 to 260 hull points), and gathering a padded copy
+    per solid then costs more than the products; a few are gathered padded, which
+    saves the grouping's calls.
     """
     k, m = axes.shape[:2]
     # (k, m, 3): directions in the solids' frames
-    local = np.matmul(axes, rot).astype(table[0].dtype if len(table) else float, copy=False)
-    out = np.empty((k, m))
-    for rows in groups(index):
-        points = table[index[rows[0]]]
-        out[rows] = (local[rows].reshape(-1, 3) @ points.T).max(axis=1).reshape(-1, m)
-    return out + np.einsum("kai,ki->ka", axes, pos)
+    local = np.matmul(axes, rot).astype(points.padded.dtype, copy=False)
+    if k < GROUPED_FROM:
+        top = np.matmul(local, points.padded[index].transpose(0, 2, 1)).max(axis=2)
+    else:
+        top = np.empty((k, m))
+        for rows in groups(index):
+            top[rows] = (local[rows].reshape(-1, 3) @ points.sets[index[rows[0]]].T).max(
+                axis=1).reshape(-1, m)
+    return top + np.einsum("kai,ki->ka", axes, pos)
 
 
-def support_points(table, index, rot, pos, u) -> np.ndarray:
+def support_points(points: PointSets, index, rot, pos, u) -> np.ndarray:
     """(k, 3): a world point of solid t (as in `reach`) maximizing u[t] . x; u (k, 3)."""
     local = np.einsum("ki,kij->kj", u, rot)
-    out = np.empty((len(u), 3))
-    for rows in groups(index):
-        points = table[index[rows[0]]]
-        out[rows] = points[(local[rows] @ points.T).argmax(axis=1)]
+    if len(u) < GROUPED_FROM:
+        sets = points.padded[index]
+        best = np.einsum("kvi,ki->kv", sets, local).argmax(axis=1)
+        out = sets[np.arange(len(u)), best]
+    else:
+        out = np.empty((len(u), 3))
+        for rows in groups(index):
+            p = points.sets[index[rows[0]]]
+            out[rows] = p[(local[rows] @ p.T).argmax(axis=1)]
     return np.einsum("kij,kj->ki", rot, out) + pos

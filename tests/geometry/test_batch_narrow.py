@@ -8,7 +8,7 @@ import fcl
 import numpy as np
 import pytest
 
-from tampcli.geometry import certify, transforms
+from tampcli.geometry import certify, obb, transforms
 from tampcli.geometry.collision import CollisionChecker
 from tampcli.geometry.narrow import (
     TOLERANCE,
@@ -116,7 +116,7 @@ def _polytopes():
 
 
 def _solids(shapes, index, frames):
-    return certify.Solids(tuple(s.vertices for s in shapes), np.array(index),
+    return certify.Solids(obb.PointSets([s.vertices for s in shapes]), np.array(index),
                           frames[:, :3, :3], frames[:, :3, 3],
                           np.array([shapes[i].kind == "box" for i in index]))
 

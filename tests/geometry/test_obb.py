@@ -93,8 +93,8 @@ def _hull_gaps(sides, rows, float32=False):
     ha = np.array([parts_a[i].obb_half for i in ia])
     hb = np.array([parts_b[i].obb_half for i in ib])
     dtype = np.float32 if float32 else float
-    hull = obb.hull_gaps(tuple(p.hull.astype(dtype) for p in parts_a), ia, ta, ra, ha,
-                         tuple(p.hull.astype(dtype) for p in parts_b), ib, tb, rb, hb, ca, cb)
+    hull = obb.hull_gaps(obb.PointSets([p.hull for p in parts_a], dtype), ia, ta, ra, ha,
+                         obb.PointSets([p.hull for p in parts_b], dtype), ib, tb, rb, hb, ca, cb)
     return obb.gaps(ca, ra, ha, cb, rb, hb), hull, (ta, ia, ra, ca, tb, ib, rb, cb)
 
 
@@ -130,15 +130,18 @@ def test_hull_gaps_equal_every_point_on_all_seven_axes():
         assert abs(hull32[t] - full) <= 2 * FLOAT32_ERROR * (1.0 + 0.5)
 
 
-def test_reach_and_support_points_of_point_sets_of_several_sizes():
+@pytest.mark.parametrize("n", [6, 3 * obb.GROUPED_FROM])
+def test_reach_and_support_points_of_point_sets_of_several_sizes(n):
+    """Both ways `reach` takes the solids (padded for a few, set by set for many)."""
     rng = np.random.default_rng(4)
-    table = tuple(rng.normal(size=(n, 3)) for n in (7, 3, 12))
-    index = np.array([2, 0, 1, 2, 2, 0])
+    sets = [rng.normal(size=(v, 3)) for v in (7, 3, 12)]
+    points = obb.PointSets(sets)
+    index = rng.integers(len(sets), size=n)
     frames = np.array([_random_pose(rng) for _ in index])
-    axes = rng.normal(size=(len(index), 2, 3))
-    got = obb.reach(table, index, frames[:, :3, :3], frames[:, :3, 3], axes)
-    points = obb.support_points(table, index, frames[:, :3, :3], frames[:, :3, 3], axes[:, 0])
+    axes = rng.normal(size=(n, 2, 3))
+    got = obb.reach(points, index, frames[:, :3, :3], frames[:, :3, 3], axes)
+    best = obb.support_points(points, index, frames[:, :3, :3], frames[:, :3, 3], axes[:, 0])
     for k, i in enumerate(index):
-        world = table[i] @ frames[k, :3, :3].T + frames[k, :3, 3]
+        world = sets[i] @ frames[k, :3, :3].T + frames[k, :3, 3]
         np.testing.assert_allclose(got[k], (world @ axes[k].T).max(axis=0))
-        np.testing.assert_allclose(points[k], world[(world @ axes[k, 0]).argmax()])
+        np.testing.assert_allclose(best[k], world[(world @ axes[k, 0]).argmax()])
