@@ -89,7 +89,7 @@ class Boxes:
         self.h = table.obb_half
         self.aabb = obb.aabb_half(self.r, self.h)
         rf = frames[..., :3, :3]
-        self.s = np.einsum("...ij,...j->...i", rf, table.sphere) + frames[..., :3, 3]
+        self.s = np.matmul(rf, table.sphere[..., None])[..., 0] + frames[..., :3, 3]
         self.radius = table.radius
 
 

@@ -76,15 +76,18 @@ def penetration(dist, p1, p2, normal, has_normal, a: Solids, b: Solids):
     line = np.divide(line, norm[:, None], out=np.zeros_like(line),
                      where=norm[:, None] > 1e-12)
     # Fixed slots in narrow._candidates' order; an absent candidate repeats the first
-    # direction, which argmin (first of equals) never prefers to it.
+    # direction, which argmin (first of equals) never prefers to it. A side with no box
+    # among its solids has no face slots.
     rows = [np.broadcast_to(_WORLD_AXES, (k, 6, 3)),
             np.where(has_normal[:, None], normal, filler)[:, None],
             np.where(norm[:, None] > 1e-12, line, filler)[:, None]]
     for solids in (a, b):
+        if not solids.box.any():
+            continue
         faces, is_box = solids.rot.transpose(0, 2, 1), solids.box[:, None, None]
         rows += [np.where(is_box, faces, filler[:, None]),
                  np.where(is_box, -faces, filler[:, None])]
-    dirs = np.concatenate(rows, axis=1)  # (k, 20, 3)
+    dirs = np.concatenate(rows, axis=1)  # (k, 8 to 20, 3)
     overlaps = a.supports(dirs) + b.supports(-dirs)
     pick = overlaps.argmin(axis=1)
     at = np.arange(k)

@@ -19,7 +19,8 @@ import numpy as np
 from tampcli.geometry import certify, prism, transforms
 from tampcli.geometry.broad import PartTable
 from tampcli.geometry.certify import Solids
-from tampcli.geometry.narrow import TOLERANCE, Placed, certified, checked, no_fcl, rounded
+from tampcli.geometry.narrow import TOLERANCE, Placed, certified, no_fcl, rounded
+from tampcli.geometry.narrow import fcl_distance as narrow_fcl_distance
 from tampcli.geometry.parts import Part
 
 SCALAR_PAIRS = 4  # groups of at most this many pairs skip the array set-up (measured)
@@ -180,12 +181,10 @@ class Batch:
             for array, value in zip((dist, p1, p2, normal), answer, strict=True):
                 array[rows[ok]] = value[ok]
             done[rows[ok]] = True
-        parts_a, parts_b = ta.parts, tb.parts
         for t in np.flatnonzero(~done).tolist():
             raw = (float(dist[t]), p1[t].copy(), p2[t].copy()) if found[t] else None
-            dist[t], p1[t], p2[t], normal[t] = checked(
-                raw, Placed(parts_a[int(ia[t])].shape, wa[t]),
-                Placed(parts_b[int(ib[t])].shape, wb[t]))
+            dist[t], p1[t], p2[t], normal[t] = self._certified(
+                raw, ta.parts[int(ia[t])], wa[t], tb.parts[int(ib[t])], wb[t])
         margin_a, margin_b = ta.margin[ia], tb.margin[ib]
         dist -= margin_a + margin_b
         p1 += margin_a[:, None] * normal
@@ -238,7 +237,7 @@ class Batch:
                 answered[i] = True
         rows = rows[answered]
         near = near[answered]
-        world = np.einsum("kij,kpj->kpi", rb[rows], near) + xb[rows][:, None]
+        world = np.matmul(near, rb[rows].transpose(0, 2, 1)) + xb[rows][:, None]
         p1[rows], p2[rows] = world[:, 0], world[:, 1]
         found[rows] = True
         return found
@@ -252,12 +251,17 @@ class Batch:
         rows = samples[within]
         chain = self.checker.world.chain
         n = normal[within]
+        basis = self.basis()[rows]
         for sign, side, point in ((-1.0, a, p1), (1.0, b, p2)):
             if side.moves is None:
                 continue
             v = np.concatenate([transforms.cross(point[within], n), n], axis=1)
-            g = np.einsum("kij,kj->ki", self.basis()[rows], v)
-            grad += sign * g * chain.moved_mask[side.moves[within]]
+            g = np.matmul(basis, v[:, :, None])[:, :, 0]
+            g *= chain.moved_mask[side.moves[within]]
+            if sign > 0:
+                grad += g
+            else:
+                grad -= g
         parts_a, parts_b = a.table.parts, b.table.parts
         out = self.out
         for s, ja, jb, d, pa, pb_, u, g in zip(
@@ -279,17 +283,18 @@ class Batch:
         for t, (s, ja, jb) in enumerate(zip(samples.tolist(), a.index.tolist(),
                                             b.index.tolist(), strict=True)):
             pa, pb_ = ta.parts[ja], tb.parts[jb]
-            placed_a, placed_b = Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t])
-            answer = prism.distance(placed_a, placed_b) if ta.prism[ja] and tb.prism[jb] \
-                else None
+            answer = None
+            if ta.prism[ja] and tb.prism[jb]:
+                answer = prism.distance(Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t]))
             if answer is None:
                 raw = None
-                if not no_fcl(placed_a, placed_b):
+                if not (ta.box[ja] and tb.box[jb]
+                        and no_fcl(Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t]))):
                     d = fcl_distance(request, pa.obj, pb_.obj, rot[t], pos[t], result)
                     if d is not None:
                         near_a, near_b = result.nearest_points
                         raw = (d, rb[t] @ near_a + xb[t], rb[t] @ near_b + xb[t])
-                answer = certified(raw, placed_a, placed_b)
+                answer = self._certified(raw, pa, wa[t], pb_, wb[t])
             d, p1, p2, n = rounded(*answer, pa.shape.margin, pb_.shape.margin)
             if d > self.activation:
                 continue
@@ -298,6 +303,15 @@ class Batch:
                 if side.moves is not None:
                     grad += sign * (self.basis()[s] @ moment(point, n)) * mask[side.moves[t]]
             self.out[s].append(Contact(pa.owner, pb_.owner, float(d), p1, p2, n, grad))
+
+
+    def _certified(self, raw, pa: Part, wa, pb_: Part, wb):
+        """narrow.certified of FCL's answer (in the world) for one pair, asking FCL
+        again with both shapes in their world placements if it fails the check."""
+        a, b = Placed(pa.shape, wa), Placed(pb_.shape, wb)
+        request = self.checker._request
+        return certified(raw, a, b,
+                         again=lambda: narrow_fcl_distance(request, a, pa.obj, b, pb_.obj))
 
 
 def _relative(ra, xa, rb, xb):
