@@ -101,7 +101,7 @@ def hull_points(shape, center, rot, half) -> np.ndarray:
     return corners @ rot.T + center
 
 
-GROUPED_FROM = 32  # solids from which `reach` takes them set by set (measured)
+GROUPED_FROM = 128  # solids from which `reach` takes them set by set (measured: ~150 on a Panda)
 
 
 class PointSets:
