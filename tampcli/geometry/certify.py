@@ -8,7 +8,7 @@ touching or penetrating one is bounded by the least overlap of the solids'
 projections over the same candidate directions as `narrow._candidates`
 (`penetration`). What these leave undecided (a separating direction found
 where FCL saw contact, or a separated answer off by more than TOLERANCE) goes
-to `narrow.checked`, pair by pair, as before.
+pair by pair to `narrow.certified` (FCL asked once more, then our GJK).
 """
 
 from __future__ import annotations

@@ -19,10 +19,10 @@ Pairs covered by `CollisionChecker.distances`:
 Broad phase, for a batch of configurations at once (`distances_many`): the
 links' frames by one batched forward kinematics, then world-aligned boxes and
 bounding spheres of every (row, part, body) triple, then the oriented-box and
-hull-point gaps of the survivors (obb.py), all as array operations; only
-pairs whose bounds are within `activation` reach the narrow phase (pairs.py:
-FCL per pair, its answers checked and the gradients taken for all pairs
-together; narrow.py, prism.py). Distances are signed (negative
+hull-point gaps of the survivors (broad.py, obb.py), all as array operations;
+only pairs whose bounds are within `activation` reach the narrow phase
+(pairs.py: FCL per pair, its answers checked (certify.py) and the gradients
+taken for all pairs together; narrow.py, prism.py). Distances are signed (negative
 = penetration depth). `normal` points from a to b; `gradient` = d distance
 / d q = -normal . J_a(point_a) (+ normal . J_b(point_b) when b moves with q).
 """

@@ -304,7 +304,6 @@ class Batch:
                     grad += sign * (self.basis()[s] @ moment(point, n)) * mask[side.moves[t]]
             self.out[s].append(Contact(pa.owner, pb_.owner, float(d), p1, p2, n, grad))
 
-
     def _certified(self, raw, pa: Part, wa, pb_: Part, wb):
         """narrow.certified of FCL's answer (in the world) for one pair, asking FCL
         again with both shapes in their world placements if it fails the check."""
