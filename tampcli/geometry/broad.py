@@ -136,11 +136,17 @@ def masks(link_parts: list[Part], n_body_parts: int, parts_of: dict[str, list[in
 def broad_gaps(a_c, a_aabb, a_s, a_radius, b_c, b_aabb, b_s, b_radius) -> np.ndarray:
     """Lower bounds (broadcast shape) from world-aligned boxes and spheres: the larger.
 
-    Centres and half extents are (..., 3) arrays, radii (...). The arithmetic runs
-    on the transposes (components first, rows last), so that numpy's innermost
-    loops run along the rows rather than over 3 components (1.5 times faster,
-    measured); the answer is transposed back.
+    Centres and half extents are (..., 3) arrays, radii (...). On many rows the
+    arithmetic runs on the transposes (components first, rows last), so that
+    numpy's innermost loops run along the rows rather than over 3 components (1.5
+    times faster, measured on 200 configurations); the answer is transposed back.
     """
+    if np.shape(a_c)[0] < TRANSPOSED_FROM:
+        apart = np.abs(a_c - b_c) - a_aabb - b_aabb
+        np.maximum(apart, 0.0, out=apart)
+        between = a_s - b_s
+        sphere = np.sqrt(np.einsum("...i,...i->...", between, between)) - a_radius - b_radius
+        return np.maximum(np.sqrt(np.einsum("...i,...i->...", apart, apart)), sphere)
     ndim = max(np.ndim(a_c), np.ndim(b_c))
 
     def rev(x, extra=0):
@@ -158,3 +164,6 @@ def broad_gaps(a_c, a_aabb, a_s, a_radius, b_c, b_aabb, b_s, b_radius) -> np.nda
     sphere = np.sqrt(between[0] + between[1] + between[2])
     sphere -= rev(a_radius, 1) + rev(b_radius, 1)
     return np.maximum(np.sqrt(apart[0] + apart[1] + apart[2]), sphere).T
+
+
+TRANSPOSED_FROM = 8  # rows (a's leading dimension) from which broad_gaps transposes

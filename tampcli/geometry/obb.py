@@ -147,6 +147,10 @@ def hull_gaps(table_a, index_a, frames_a, ra, ha, table_b, index_b, frames_b, rb
     axes = np.concatenate([ra.transpose(0, 2, 1), rb.transpose(0, 2, 1), line[:, None, :]],
                           axis=1)  # (k, 7, 3)
     axes = axes * np.where(np.einsum("kai,ki->ka", axes, d) < 0, -1.0, 1.0)[:, :, None]
+    if len(d) < GROUPED_FROM:  # few pairs: fewer calls, all directions through the points
+        top_a = reach(table_a, index_a, frames_a[:, :3, :3], frames_a[:, :3, 3], axes)
+        top_b = reach(table_b, index_b, frames_b[:, :3, :3], frames_b[:, :3, 3], -axes)
+        return (-(top_a + top_b)).max(axis=1)
     # A box from `fit` touches its points on each face: on its own axes a solid's
     # support is its box's, and only the other 4 directions need its points.
     top_a = np.empty(axes.shape[:2])

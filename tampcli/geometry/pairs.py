@@ -23,7 +23,7 @@ from tampcli.geometry.narrow import TOLERANCE, Placed, certified, no_fcl, rounde
 from tampcli.geometry.narrow import fcl_distance as narrow_fcl_distance
 from tampcli.geometry.parts import Part
 
-SCALAR_PAIRS = 4  # groups of at most this many pairs skip the array set-up (measured)
+SCALAR_PAIRS = 8  # groups of at most this many pairs skip the array set-up (measured)
 
 
 @dataclass(frozen=True)
@@ -299,9 +299,11 @@ class Batch:
             if d > self.activation:
                 continue
             grad = np.zeros(self.checker.n)
-            for sign, side, point in ((-1.0, a, p1), (1.0, b, p2)):
-                if side.moves is not None:
-                    grad += sign * (self.basis()[s] @ moment(point, n)) * mask[side.moves[t]]
+            basis = self.basis()[s]
+            if a.moves is not None:
+                grad -= (basis @ moment(p1, n)) * mask[a.moves[t]]
+            if b.moves is not None:
+                grad += (basis @ moment(p2, n)) * mask[b.moves[t]]
             self.out[s].append(Contact(pa.owner, pb_.owner, float(d), p1, p2, n, grad))
 
     def _certified(self, raw, pa: Part, wa, pb_: Part, wb):
