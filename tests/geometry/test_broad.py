@@ -16,18 +16,19 @@ def _direct(a_c, a_aabb, a_s, a_radius, b_c, b_aabb, b_s, b_radius):
 
 
 def _boxes(rng, *shape):
-    return (rng.normal(size=(*shape, 3)), rng.uniform(0.0, 0.3, (*shape, 3)),
-            rng.normal(size=(*shape, 3)))
+    centres = rng.normal(scale=0.12, size=(*shape, 3))
+    return (centres, rng.uniform(0.0, 0.1, (*shape, 3)),
+            centres + rng.normal(scale=0.02, size=(*shape, 3)))
 
 
 @pytest.mark.parametrize("rows", [3, 5 * TRANSPOSED_FROM])
 def test_broad_gaps_forms(rows):
     rng = np.random.default_rng(rows)
     lc, la, ls = _boxes(rng, rows, 11)
-    lr = rng.uniform(0.0, 0.4, 11)
+    lr = rng.uniform(0.05, 0.15, 11)
     for shared in (1, rows):  # one world state for all rows, or one per row
         bc, ba, bs = _boxes(rng, shared, 7)
-        br = rng.uniform(0.0, 0.4, 7)
+        br = rng.uniform(0.05, 0.15, 7)
         args = (lc[:, :, None], la[:, :, None], ls[:, :, None], lr[None, :, None],
                 bc[:, None], ba[:, None], bs[:, None], br)
         got = broad_gaps(*args)
