@@ -105,10 +105,10 @@ def screen(activation, a: Boxes, ia: tuple, pa, b: Boxes, ib: tuple, pb_) -> np.
     sub_a = tuple(i[keep] for i in ia)
     sub_b = tuple(i[keep] for i in ib)
     pa, pb_ = pa[keep], pb_[keep]
-    slack = a.table.slack[pa] + b.table.slack[pb_]
+    beyond = activation + a.table.slack[pa] + b.table.slack[pb_]
     keep[keep] = obb.hull_gaps(a.table.hulls32, pa, a.frames[sub_a], a.r[sub_a], a.h[pa],
                                b.table.hulls32, pb_, b.frames[sub_b], b.r[sub_b], b.h[pb_],
-                               a.c[sub_a], b.c[sub_b]) <= activation + slack
+                               a.c[sub_a], b.c[sub_b], beyond) <= beyond
     return keep
 
 

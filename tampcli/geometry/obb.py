@@ -133,17 +133,31 @@ def groups(index: np.ndarray) -> list[np.ndarray]:
 
 
 def hull_gaps(table_a, index_a, frames_a, ra, ha, table_b, index_b, frames_b, rb, hb, ca,
-              cb) -> np.ndarray:
+              cb, beyond=None) -> np.ndarray:
     """(k,) lower bounds on the distances between k pairs of solids given by points.
 
     Side a of pair t is the hull of the point set index_a[t] of table_a
     (`PointSets`, owner frames) placed by frames_a[t] (4, 4), with the oriented box (`fit`)
     of centre ca[t], axes ra[t] (3, 3) and half extents ha[t]; likewise b. The
     directions tried are those of `gaps`.
+
+    `beyond` (k,), when given: a pair whose gap along the centre line alone
+    exceeds it keeps that gap (a lower bound too) without the other 6 directions.
+    On a Panda's self pairs the centre line drops 566 of the 577 pairs all 7
+    directions drop, for a quarter of the work.
     """
     d = cb - ca
     norm = np.linalg.norm(d, axis=1, keepdims=True)
     line = np.divide(d, norm, out=np.zeros_like(d), where=norm > 1e-12)
+    if beyond is not None and len(d) >= GROUPED_FROM:
+        u = line[:, None, :]
+        gap = -(reach(table_a, index_a, frames_a[:, :3, :3], frames_a[:, :3, 3], u)
+                + reach(table_b, index_b, frames_b[:, :3, :3], frames_b[:, :3, 3], -u))[:, 0]
+        todo = np.flatnonzero(gap <= beyond)
+        gap[todo] = hull_gaps(table_a, index_a[todo], frames_a[todo], ra[todo], ha[todo],
+                              table_b, index_b[todo], frames_b[todo], rb[todo], hb[todo],
+                              ca[todo], cb[todo])
+        return gap
     axes = np.concatenate([ra.transpose(0, 2, 1), rb.transpose(0, 2, 1), line[:, None, :]],
                           axis=1)  # (k, 7, 3)
     axes = axes * np.where(np.einsum("kai,ki->ka", axes, d) < 0, -1.0, 1.0)[:, :, None]

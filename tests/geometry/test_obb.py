@@ -79,7 +79,7 @@ def _rows(seed):
     return sides, rows
 
 
-def _hull_gaps(sides, rows, float32=False):
+def _hull_gaps(sides, rows, float32=False, beyond=None):
     """obb.gaps and obb.hull_gaps of the rows, as broad.screen calls them."""
     ta = np.array([r[0] for r in rows])
     tb = np.array([r[2] for r in rows])
@@ -94,7 +94,8 @@ def _hull_gaps(sides, rows, float32=False):
     hb = np.array([parts_b[i].obb_half for i in ib])
     dtype = np.float32 if float32 else float
     hull = obb.hull_gaps(obb.PointSets([p.hull for p in parts_a], dtype), ia, ta, ra, ha,
-                         obb.PointSets([p.hull for p in parts_b], dtype), ib, tb, rb, hb, ca, cb)
+                         obb.PointSets([p.hull for p in parts_b], dtype), ib, tb, rb, hb, ca, cb,
+                         beyond)
     return obb.gaps(ca, ra, ha, cb, rb, hb), hull, (ta, ia, ra, ca, tb, ib, rb, cb)
 
 
@@ -122,6 +123,12 @@ def test_hull_gaps_equal_every_point_on_all_seven_axes():
     _, hull32, _ = _hull_gaps(sides, rows, float32=True)
     _, few, _ = _hull_gaps(sides, rows[:10])
     np.testing.assert_allclose(few, hull[:10], atol=1e-12)
+    # With a threshold, the bound decides every pair as the full one does.
+    for beyond in (0.0, 0.05):
+        cut = _hull_gaps(sides, rows, beyond=np.full(len(rows), beyond))[1]
+        np.testing.assert_array_equal(cut <= beyond, hull <= beyond)
+        assert np.all(cut <= hull + 1e-12)
+        assert 0 < (hull <= beyond).sum() < len(rows)
     for t in range(len(rows)):
         d = cb[t] - ca[t]
         line = d / np.linalg.norm(d)
