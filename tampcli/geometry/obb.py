@@ -101,7 +101,10 @@ def hull_points(shape, center, rot, half) -> np.ndarray:
     return corners @ rot.T + center
 
 
-GROUPED_FROM = 128  # solids from which `reach` takes them set by set (measured: ~150 on a Panda)
+GROUPED_FROM = 128  # pairs from which `hull_gaps` saves products at the cost of calls
+# Points `reach` gathers padded at most; beyond, it takes the solids set by set (the
+# measured crossover on a Panda's links, 11 sets of up to 260 points: ~130 solids).
+PADDED_POINTS = 32768
 
 
 class PointSets:
@@ -120,6 +123,10 @@ class PointSets:
         for i, p in enumerate(self.sets):
             self.padded[i, :len(p)] = p
             self.padded[i, len(p):] = p[0]
+
+    def gathered(self, k: int) -> bool:
+        """Whether k solids are taken padded, gathered in one array (else set by set)."""
+        return k * self.padded.shape[1] <= PADDED_POINTS
 
 
 def groups(index: np.ndarray) -> list[np.ndarray]:
@@ -185,15 +192,15 @@ def reach(points: PointSets, index, rot, pos, axes) -> np.ndarray:
 
     Solid t is point set index[t] of `points` at rotation rot[t] (3, 3) and
     position pos[t] (3,); axes (k, m, 3). The products are in the points' dtype.
-    Many solids are taken set by set, one matrix product per set: sets differ in
-    size (a Panda link has 102 to 260 hull points), and gathering a padded copy
-    per solid then costs more than the products; a few are gathered padded, which
-    saves the grouping's calls.
+    Many solids of large sets are taken set by set, one matrix product per set:
+    sets differ in size (a Panda link has 102 to 260 hull points), and gathering a
+    padded copy per solid then costs more than the products; otherwise they are
+    gathered padded, which saves the grouping's calls (`PointSets.gathered`).
     """
     k, m = axes.shape[:2]
     # (k, m, 3): directions in the solids' frames
     local = np.matmul(axes, rot).astype(points.padded.dtype, copy=False)
-    if k < GROUPED_FROM:
+    if points.gathered(k):
         top = np.matmul(local, points.padded[index].transpose(0, 2, 1)).max(axis=2)
     else:
         top = np.empty((k, m))
@@ -206,7 +213,7 @@ def reach(points: PointSets, index, rot, pos, axes) -> np.ndarray:
 def support_points(points: PointSets, index, rot, pos, u) -> np.ndarray:
     """(k, 3): a world point of solid t (as in `reach`) maximizing u[t] . x; u (k, 3)."""
     local = np.einsum("ki,kij->kj", u, rot)
-    if len(u) < GROUPED_FROM:
+    if points.gathered(len(u)):
         sets = points.padded[index]
         best = np.einsum("kvi,ki->kv", sets, local).argmax(axis=1)
         out = sets[np.arange(len(u)), best]

@@ -141,12 +141,13 @@ def test_hull_gaps_equal_every_point_on_all_seven_axes():
         assert abs(hull32[t] - full) <= 2 * FLOAT32_ERROR * (1.0 + 0.5)
 
 
-@pytest.mark.parametrize("n", [6, 3 * obb.GROUPED_FROM])
+@pytest.mark.parametrize("n", [6, obb.PADDED_POINTS // 12 + 5])
 def test_reach_and_support_points_of_point_sets_of_several_sizes(n):
     """Both ways `reach` takes the solids (padded for a few, set by set for many)."""
     rng = np.random.default_rng(4)
     sets = [rng.normal(size=(v, 3)) for v in (7, 3, 12)]
     points = obb.PointSets(sets)
+    assert points.gathered(n) == (n < 100)
     index = rng.integers(len(sets), size=n)
     frames = np.array([_random_pose(rng) for _ in index])
     axes = rng.normal(size=(n, 2, 3))
