@@ -19,10 +19,10 @@ Pairs covered by `CollisionChecker.distances`:
 Broad phase, for a batch of configurations at once (`distances_many`): the
 links' frames by one batched forward kinematics, then world-aligned boxes and
 bounding spheres of every (row, part, body) triple, then the oriented-box and
-hull-point gaps of the survivors (obb.py), all as array operations; only
-pairs whose bounds are within `activation` reach the narrow phase (pairs.py:
-FCL per pair, its answers checked and the gradients taken for all pairs
-together; narrow.py, prism.py). Distances are signed (negative
+hull-point gaps of the survivors (broad.py, obb.py), all as array operations;
+only pairs whose bounds are within `activation` reach the narrow phase
+(pairs.py: FCL per pair, its answers checked (certify.py) and the gradients
+taken for all pairs together; narrow.py, prism.py). Distances are signed (negative
 = penetration depth). `normal` points from a to b; `gradient` = d distance
 / d q = -normal . J_a(point_a) (+ normal . J_b(point_b) when b moves with q).
 """
@@ -35,17 +35,9 @@ import fcl
 import numpy as np
 
 from tampcli.geometry import transforms
+from tampcli.geometry.broad import Boxes, PartTable, broad_gaps, masks, screen
 from tampcli.geometry.narrow import Placed, signed_distance
-from tampcli.geometry.pairs import (
-    Batch,
-    Boxes,
-    Contact,
-    Query,
-    broad_gaps,
-    local_boxes,
-    masks,
-    screen,
-)
+from tampcli.geometry.pairs import Batch, Contact, Query, Side
 from tampcli.geometry.parts import (
     Part,
     body_shapes,
@@ -73,7 +65,7 @@ class CollisionChecker:
         self.body_parts: dict[str, list[Part]] = {
             name: [Part(f"body:{name}", s, fcl_object(s), body=name) for s in shapes]
             for name, shapes in self.body_shapes.items()}
-        self._held_parts: dict[str, list[Part]] = {}
+        self._held_parts: dict[str, PartTable] = {}
         self._start = {b.name: b.matrix for b in world.scene.bodies}
         self.fixed = {b.name for b in world.scene.bodies if b.fixed}
         self.group = rigid_groups(chain)
@@ -95,13 +87,8 @@ class CollisionChecker:
         for j, (name, _, _) in enumerate(self._flat):
             self._flat_of.setdefault(name, []).append(j)
         self._link_index = np.array([p.link for p in self.link_parts], dtype=int)
-        self._link_local = local_boxes(self.link_parts)
-        # Polytopes (meshes, boxes): their hull points give exact support values.
-        self._exact_link = np.array([p.shape.vertices is not None for p in self.link_parts],
-                                    dtype=bool)
-        self._exact_body = np.array([p.shape.vertices is not None for _, _, p in self._flat],
-                                    dtype=bool)
-        self._body_local = local_boxes([p for _, _, p in self._flat])
+        self._link_table = PartTable.of(self.link_parts)
+        self._body_table = PartTable.of(p for _, _, p in self._flat)
         # The screens bound the cores; two rounded solids are closer by their margins.
         every = (*self.link_parts, *(p for _, _, p in self._flat))
         self._pad = 2.0 * max((p.shape.margin for p in every), default=0.0)
@@ -127,10 +114,10 @@ class CollisionChecker:
         return tuple((self.link_parts[a].owner, self.link_parts[b].owner)
                      for a, b in self.self_pairs)
 
-    def _held(self, name: str) -> list[Part]:
+    def _held(self, name: str) -> PartTable:
         if name not in self._held_parts:
-            self._held_parts[name] = [Part(f"held:{name}", s, fcl_object(s), body=name)
-                                      for s in self.body_shapes[name]]
+            self._held_parts[name] = PartTable.of(
+                Part(f"held:{name}", s, fcl_object(s), body=name) for s in self.body_shapes[name])
         return self._held_parts[name]
 
     # ------------------------------------------------------------ queries
@@ -171,28 +158,16 @@ class CollisionChecker:
             frames = chain.refixed(frames, dict(zip(self.world.finger_links, values.T,
                                                     strict=True)))
         if per_row:
-            poses = [self._body_poses(bp) for bp in body_poses]
-            moved = [frozenset(bp or ()) for bp in body_poses]
-            bodies = self._body_boxes_rows(poses, moved)
-            shared = dict(self._static_placed)
+            bodies = self._body_boxes_rows([self._body_poses(bp) for bp in body_poses],
+                                           [frozenset(bp or ()) for bp in body_poses])
         else:
-            poses = [self._body_poses(body_poses)] * n_samples
-            moved = [frozenset()] * n_samples  # the shared cache holds this one state
-            bodies = self._start_or_moved(body_poses, poses[0])
-            shared = self._shared_placed(body_poses)
-        queries = [Query(chain, frames[s], shared) for s in range(n_samples)]
-        batch = Batch(self, queries, frames, activation)
+            bodies = self._start_or_moved(body_poses, self._body_poses(body_poses))
+        batch = Batch(self, frames, activation)
         reach = activation + self._pad
         usable, columns = masks(self.link_parts, len(self._flat), self._flat_of, ignores,
                                 [h[0] if h else None for h in helds])
-        parts = self.link_parts
-        links = Boxes(frames[:, self._link_index], parts, self._link_local)
+        links = Boxes(frames[:, self._link_index], self._link_table)
         link_moves = self._link_index
-
-        def body_side(s, j):
-            name, k, bp = self._flat[j]
-            key = ("body", name, k, s) if name in moved[s] else ("body", name, k)
-            return key, bp, poses[s][name]
 
         def body_index(s_):
             return s_ if per_row else np.zeros_like(s_)
@@ -205,17 +180,13 @@ class CollisionChecker:
         s_, i_, j_ = np.nonzero(near)
         keep = screen(reach, links, (s_, i_), i_, bodies, (body_index(s_), j_), j_)
         s_, i_, j_ = s_[keep], i_[keep], j_[keep]
-        batch.narrow(s_, [(i, parts[i], None) for i in i_.tolist()],
-                     [body_side(s, j) for s, j in zip(s_.tolist(), j_.tolist(), strict=True)],
-                     (links.frames[s_, i_], links.points[i_], self._exact_link[i_],
-                      link_moves[i_]),
-                     (bodies.frames[body_index(s_), j_], bodies.points[j_],
-                      self._exact_body[j_], None))
+        batch.narrow(s_, Side(links.table, i_, links.frames[s_, i_], link_moves[i_]),
+                     Side(bodies.table, j_, bodies.frames[body_index(s_), j_], None))
         for name in sorted({h[0] for h in helds if h is not None}):
             rows = np.array([s for s, h in enumerate(helds) if h is not None and h[0] == name])
             grasps = np.array([np.asarray(helds[s][1], dtype=float) for s in rows])
             self._held_pairs(batch, name, rows, grasps, frames, links, bodies, per_row,
-                             body_side, columns, usable)
+                             columns, usable)
         if len(self._self_a):
             ia, ib = self._self_a, self._self_b
             gap = broad_gaps(links.c[:, ia], links.aabb[:, ia], links.s[:, ia], links.radius[ia],
@@ -225,24 +196,19 @@ class CollisionChecker:
             a_, b_ = ia[k_], ib[k_]
             keep = screen(reach, links, (s_, a_), a_, links, (s_, b_), b_)
             s_, a_, b_ = s_[keep], a_[keep], b_[keep]
-            batch.narrow(s_, [(a, parts[a], None) for a in a_.tolist()],
-                         [(b, parts[b], None) for b in b_.tolist()],
-                         (links.frames[s_, a_], links.points[a_], self._exact_link[a_],
-                          link_moves[a_]),
-                         (links.frames[s_, b_], links.points[b_], self._exact_link[b_],
-                          link_moves[b_]))
+            batch.narrow(s_, Side(links.table, a_, links.frames[s_, a_], link_moves[a_]),
+                         Side(links.table, b_, links.frames[s_, b_], link_moves[b_]))
         return batch.out
 
-    def _held_pairs(self, batch, name, rows, grasps, frames, links, bodies, per_row,
-                    body_side, columns, usable):
+    def _held_pairs(self, batch, name, rows, grasps, frames, links, bodies, per_row, columns,
+                    usable):
         """Object `name` held at rows `rows` (grasps (G, 4, 4)) vs bodies and vs the
         links outside the tool's rigid group."""
         reach = batch.activation + self._pad
         held_poses = frames[rows, self._tool] @ grasps  # (G, 4, 4)
-        parts = self._held(name)
-        boxes = Boxes(held_poses[:, None], parts)  # (G, H, ...)
-        exact = np.array([p.shape.vertices is not None for p in parts], dtype=bool)
-        tool = np.full(len(parts), self._tool)
+        table = self._held(name)
+        boxes = Boxes(held_poses[:, None], table)  # (G, H, ...)
+        tool = np.full(len(table.parts), self._tool)
         # Vs bodies (per row when each row has its own world state).
         b = bodies
         brow = rows if per_row else np.zeros(len(rows), dtype=int)
@@ -252,12 +218,8 @@ class CollisionChecker:
         g_, h_, j_ = np.nonzero((gap <= reach) & columns[rows][:, None, :])
         keep = screen(reach, boxes, (g_, h_), h_, b, (brow[g_], j_), j_)
         g_, h_, j_ = g_[keep], h_[keep], j_[keep]
-        s_ = rows[g_]
-        batch.narrow(s_, [(("held", h), parts[h], held_poses[g])
-                          for g, h in zip(g_.tolist(), h_.tolist(), strict=True)],
-                     [body_side(s, j) for s, j in zip(s_.tolist(), j_.tolist(), strict=True)],
-                     (boxes.frames[g_, h_], boxes.points[h_], exact[h_], tool[h_]),
-                     (b.frames[brow[g_], j_], b.points[j_], self._exact_body[j_], None))
+        batch.narrow(rows[g_], Side(table, h_, held_poses[g_], tool[h_]),
+                     Side(b.table, j_, b.frames[brow[g_], j_], None))
         # Vs links.
         gap = broad_gaps(boxes.c[:, :, None], boxes.aabb[:, :, None], boxes.s[:, :, None],
                          boxes.radius[None, :, None], links.c[rows][:, None],
@@ -267,12 +229,8 @@ class CollisionChecker:
         keep = screen(reach, boxes, (g_, h_), h_, links, (rows[g_], j_), j_)
         g_, h_, j_ = g_[keep], h_[keep], j_[keep]
         s_ = rows[g_]
-        batch.narrow(s_, [(("held", h), parts[h], held_poses[g])
-                          for g, h in zip(g_.tolist(), h_.tolist(), strict=True)],
-                     [(j, self.link_parts[j], None) for j in j_.tolist()],
-                     (boxes.frames[g_, h_], boxes.points[h_], exact[h_], tool[h_]),
-                     (links.frames[s_, j_], links.points[j_], self._exact_link[j_],
-                      self._link_index[j_]))
+        batch.narrow(s_, Side(table, h_, held_poses[g_], tool[h_]),
+                     Side(links.table, j_, links.frames[s_, j_], self._link_index[j_]))
 
     def _contact(self, query, pa: Part, a: Placed, pb_: Part, b: Placed) -> Contact:
         d, p1, p2, n = signed_distance(self._request, a, pa.obj, b, pb_.obj)
@@ -343,17 +301,16 @@ class CollisionChecker:
     def _body_boxes(self, poses) -> Boxes:
         """Boxes of all body parts in one world state, with a leading row axis of 1."""
         frames = np.array([poses[name] for name, _, _ in self._flat]).reshape(1, -1, 4, 4)
-        return Boxes(frames, [p for _, _, p in self._flat], self._body_local)
+        return Boxes(frames, self._body_table)
 
     def _body_boxes_rows(self, poses: list[dict], moved: list[frozenset]) -> Boxes:
         """Boxes of all body parts in each row's world state: leading axis S."""
         if not any(moved):
             return Boxes(np.broadcast_to(self._body_start.frames,
                                           (len(poses), *self._body_start.frames.shape[1:])),
-                          [p for _, _, p in self._flat], self._body_local)
+                         self._body_table)
         frames = np.array([[p[name] for name, _, _ in self._flat] for p in poses])
-        return Boxes(frames.reshape(len(poses), -1, 4, 4), [p for _, _, p in self._flat],
-                      self._body_local)
+        return Boxes(frames.reshape(len(poses), -1, 4, 4), self._body_table)
 
     def _start_or_moved(self, body_poses, poses) -> Boxes:
         if not body_poses or not any(name in self._flat_of for name in body_poses):
@@ -392,7 +349,7 @@ class CollisionChecker:
         if kind == "held":
             if bare != held_name:
                 raise KeyError(f"{name!r} is not held")
-            return [(("held", h), p, held_pose) for h, p in enumerate(self._held(bare))]
+            return [(("held", h), p, held_pose) for h, p in enumerate(self._held(bare).parts)]
         if kind == "body":
             return [(("body", bare, k), p, poses[bare])
                     for k, p in enumerate(self.body_parts[bare])]

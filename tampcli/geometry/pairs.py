@@ -1,35 +1,29 @@
-"""Candidate pairs of a batched collision query and their narrow phase, all rows at once.
+"""The narrow phase of a batched collision query: candidate pairs answered, all rows at once.
 
-`collision.CollisionChecker` decides which pairs a query covers; this module
-holds what a batch of rows needs: placed shapes per row (`Query`), the
-oriented boxes, hulls and spheres of a set of parts in the world (`Boxes`),
-the two vectorized screens (`broad_gaps`: world-aligned boxes and spheres;
-`screen`: oriented boxes, then hull points), and `Batch`, which runs FCL on
-each surviving pair, checks its answers and takes the joint gradients of a
-whole group of pairs together.
+`broad.py` screens the candidate pairs of a `collision.CollisionChecker`
+query; `Batch` answers the pairs that remain: upright boxes and cylinders in
+closed form (prism.py), the rest by FCL pair by pair, whose answers are then
+checked (certify.py for two polytopes, narrow.py otherwise) and whose joint
+gradients are taken for the whole group at once. `Query` holds the placed
+shapes of one configuration, for the queries of one pair at a time.
 """
 
 from __future__ import annotations
 
-import math
+import sys
 from dataclasses import dataclass, field
 
+import fcl
 import numpy as np
 
-from tampcli.geometry import obb, prism, transforms
-from tampcli.geometry.narrow import (
-    PRISMS,
-    TOLERANCE,
-    Placed,
-    checked,
-    fcl_distance,
-    no_fcl,
-    signed_distance,
-)
+from tampcli.geometry import certify, prism, transforms
+from tampcli.geometry.broad import PartTable
+from tampcli.geometry.certify import Solids
+from tampcli.geometry.narrow import TOLERANCE, Placed, certified, no_fcl, rounded
+from tampcli.geometry.narrow import fcl_distance as narrow_fcl_distance
 from tampcli.geometry.parts import Part
 
-SCALAR_PAIRS = 4  # groups of at most this many pairs skip the array set-up (measured)
-HULL_SCREEN = 4  # the hull-point screen pays for itself from this many candidates on
+SCALAR_PAIRS = 8  # groups of at most this many pairs skip the array set-up (measured)
 
 
 @dataclass(frozen=True)
@@ -74,105 +68,68 @@ class Query:
         """normal . d point / d q for a point attached to chain link `link`."""
         if self._axes is None:
             self._axes = self.chain.normal_gradient_basis(self.frames)
-        p0, p1, p2 = point.tolist()
-        n0, n1, n2 = normal.tolist()
-        v = np.array([p1 * n2 - p2 * n1, p2 * n0 - p0 * n2, p0 * n1 - p1 * n0, n0, n1, n2])
-        return (self._axes @ v) * self.chain.moved_mask[link]
+        return (self._axes @ moment(point, normal)) * self.chain.moved_mask[link]
 
 
-class Boxes:
-    """Oriented boxes and bounding spheres of a set of parts, in the world.
+def moment(point, normal) -> np.ndarray:
+    """[p x n, n]: a gradient basis row (chain.normal_gradient_basis) times this is
+    n . d p / d q_i. In Python floats: np.cross costs ~20 us a call on 3-vectors."""
+    p0, p1, p2 = point.tolist()
+    n0, n1, n2 = normal.tolist()
+    return np.array([p1 * n2 - p2 * n1, p2 * n0 - p0 * n2, p0 * n1 - p1 * n0, n0, n1, n2])
 
-    Arrays have leading dimensions (..., k) for k parts: centres (3,), axes
-    (3, 3), half extents (3,), world-aligned half extents (3,), sphere
-    centres (3,) and radii.
+
+@dataclass(frozen=True, eq=False)
+class Side:
+    """One side of k candidate pairs: part index[t] of `table`, its owner at frames[t]."""
+
+    table: PartTable
+    index: np.ndarray  # (k,)
+    frames: np.ndarray  # (k, 4, 4) owner frames in the world
+    moves: np.ndarray | None  # (k,) the chain link that carries the owner; None: fixed
+
+    def shape_frames(self) -> np.ndarray:
+        """(k, 4, 4) world frames of the shapes."""
+        if self.table.identity:
+            return self.frames
+        return np.matmul(self.frames, self.table.local[self.index])
+
+
+_IDENTITY = fcl.Transform()
+_FAR = sys.float_info.max
+
+
+def fcl_distance(request, oa, ob, rot, pos, result):
+    """FCL's signed distance of object oa at rotation rot, position pos in the frame of
+    ob (which is put at the identity); None if FCL throws. The witness points, in ob's
+    frame, are left in `result`.
+
+    One relative placement per pair instead of two world ones: the answer depends on
+    it alone, and setting a rotation and a translation costs less than building the
+    fcl.Transform objects of both sides (measured: 0.7 against 1.5 us a pair).
     """
-
-    __slots__ = ("frames", "c", "r", "h", "aabb", "s", "radius", "points")
-
-    def __init__(self, frames, parts: list[Part], local=None):
-        if local is None:
-            local = local_boxes(parts)
-        center, rot, half, sphere, radius, self.points = local
-        self.frames = frames
-        self.c, self.r = obb.world(frames, center, rot)
-        self.h = half
-        self.aabb = obb.aabb_half(self.r, half)
-        rf = frames[..., :3, :3]
-        self.s = np.einsum("...ij,...j->...i", rf, sphere) + frames[..., :3, 3]
-        self.radius = radius
-
-
-def local_boxes(parts: list[Part]):
-    return (np.array([p.obb_center for p in parts]).reshape(-1, 3),
-            np.array([p.obb_rot for p in parts]).reshape(-1, 3, 3),
-            np.array([p.obb_half for p in parts]).reshape(-1, 3),
-            np.array([p.shape.center for p in parts]).reshape(-1, 3),
-            np.array([p.shape.radius for p in parts]),
-            obb.padded([p.hull for p in parts]))
-
-
-def screen(activation, a: Boxes, ia: tuple, pa, b: Boxes, ib: tuple, pb_) -> np.ndarray:
-    """Which candidate pairs may be within `activation`: oriented boxes, then hulls.
-
-    `ia`, `ib` index the boxes' arrays (sample and part indices, or part
-    indices alone for unbatched sets); `pa`, `pb_` the part indices.
-    """
-    keep = obb.gaps(a.c[ia], a.r[ia], a.h[pa], b.c[ib], b.r[ib], b.h[pb_]) <= activation
-    if keep.sum() < HULL_SCREEN:
-        return keep
-    sub_a = tuple(i[keep] for i in ia)
-    sub_b = tuple(i[keep] for i in ib)
-    keep[keep] = obb.hull_gaps(a.frames[sub_a], a.points[pa[keep]], a.r[sub_a],
-                               b.frames[sub_b], b.points[pb_[keep]], b.r[sub_b],
-                               a.c[sub_a], b.c[sub_b]) <= activation
-    return keep
-
-
-def masks(link_parts: list[Part], n_body_parts: int, parts_of: dict[str, list[int]],
-          ignores, held_names):
-    """(usable (S, link parts), columns (S, body parts)) from the names ignored and the
-    object held at each row; `parts_of`: body name -> its columns."""
-    n_samples = len(ignores)
-    usable = np.ones((n_samples, len(link_parts)), dtype=bool)
-    columns = np.ones((n_samples, n_body_parts), dtype=bool)
-    for s, (ignore, held_name) in enumerate(zip(ignores, held_names, strict=True)):
-        for j in parts_of.get(held_name, ()):
-            columns[s, j] = False
-        if not ignore:
-            continue
-        usable[s] = [p.owner not in ignore and p.owner.partition(":")[2] not in ignore
-                     for p in link_parts]
-        for name in ignore:
-            bare = name.partition(":")[2] if name.startswith("body:") else name
-            for j in parts_of.get(bare, ()):
-                columns[s, j] = False
-    return usable, columns
-
-
-def broad_gaps(a_c, a_aabb, a_s, a_radius, b_c, b_aabb, b_s, b_radius) -> np.ndarray:
-    """Lower bounds (broadcast shape) from world-aligned boxes and spheres: the larger."""
-    apart = np.abs(a_c - b_c) - a_aabb - b_aabb
-    box = np.sqrt((np.maximum(apart, 0.0) ** 2).sum(axis=-1))
-    sphere = np.linalg.norm(a_s - b_s, axis=-1) - a_radius - b_radius
-    return np.maximum(box, sphere)
+    ob.setTransform(_IDENTITY)
+    oa.setRotation(rot)
+    oa.setTranslation(pos)
+    result.min_distance = _FAR  # a result keeps the least distance it has seen
+    try:
+        return fcl.distance(oa, ob, request, result)
+    except RuntimeError:  # FCL's EPA can throw on degenerate contacts (fcl#319)
+        return None
 
 
 class Batch:
     """The narrow phase of one `distances_many` call, run group by group of pairs.
 
-    FCL answers each pair; the check of its answer (the gap of the two
-    solids' projections on its normal, narrow.py) and the joint gradients are
-    then computed for the whole group at once. Pairs whose check fails, or
-    with a curved solid, take narrow.py's scalar path.
+    Each group is a set of pairs (row, side a, side b); `narrow` answers them
+    all and adds those within `activation` to the rows' contacts (`out`).
     """
 
-    def __init__(self, checker, queries, frames, activation):
+    def __init__(self, checker, frames, activation):
         self.checker = checker
-        self.queries = queries
         self.frames = frames
         self.activation = activation
-        self.out: list[list[Contact]] = [[] for _ in queries]
+        self.out: list[list[Contact]] = [[] for _ in range(len(frames))]
         self._basis = None
 
     def basis(self) -> np.ndarray:
@@ -181,101 +138,183 @@ class Batch:
             self._basis = self.checker.world.chain.normal_gradient_basis_batch(self.frames)
         return self._basis
 
-    def narrow(self, samples, sides_a, sides_b, geom_a, geom_b) -> None:
-        """Contacts of pairs (samples[t], sides_a[t], sides_b[t]) within activation.
-
-        A side is (cache key, part, owner pose or None for a link); a geometry
-        is (owner frames (k, 4, 4), hull points (k, V, 3), exact (k,), moving
-        chain link (k,) or None when that side does not move with q).
-        """
-        k = len(sides_a)
+    def narrow(self, samples: np.ndarray, a: Side, b: Side) -> None:
+        """Contacts of the pairs (samples[t], a's part t, b's part t) within activation."""
+        k = len(samples)
         if k == 0:
             return
+        wa, wb = a.shape_frames(), b.shape_frames()
         if k <= SCALAR_PAIRS:
-            self._scalar(samples.tolist(), sides_a, sides_b, geom_a[3], geom_b[3])
+            self._scalar(samples, a, wa, b, wb)
             return
-        request = self.checker._request
-        dist = np.empty(k)
+        ra, xa, rb, xb = wa[:, :3, :3], wa[:, :3, 3], wb[:, :3, :3], wb[:, :3, 3]
+        ta, tb, ia, ib = a.table, b.table, a.index, b.index
+        dist = np.zeros(k)
         p1 = np.zeros((k, 3))
         p2 = np.zeros((k, 3))
-        raws, placed = [], []
-        closed = np.zeros(k, dtype=bool)  # answered exactly by prism.py
-        samples = samples.tolist()
-        for s, (key_a, pa, pose_a), (key_b, pb_, pose_b) in zip(samples, sides_a, sides_b,
-                                                                strict=True):
-            query = self.queries[s]
-            placed.append((query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)))
-        # Upright boxes apart in the plane, all at once (prism.upright_boxes).
-        boxes = [t for t, (a, b) in enumerate(placed)
-                 if a.shape.kind == "box" and b.shape.kind == "box"]
-        upright = dict(zip(boxes, prism.upright_boxes([placed[t] for t in boxes]),
-                           strict=True))
-        for t, (a, b) in enumerate(placed):
-            pa, pb_ = sides_a[t][1], sides_b[t][1]
-            exact = upright.get(t)
-            if exact is None and pa.shape.kind in PRISMS and pb_.shape.kind in PRISMS:
-                exact = prism.distance(a, b)
-            if exact is not None:
-                raws.append(exact)
-                closed[t] = True
-                dist[t], p1[t], p2[t], _ = exact
-                continue
-            raw = None if no_fcl(a, b) else fcl_distance(request, a, pa.obj, b, pb_.obj)
-            raws.append(raw)
-            if raw is None:
-                dist[t] = -math.inf
-            else:
-                dist[t], p1[t], p2[t] = raw
+        normal = np.zeros((k, 3))
+        done = np.zeros(k, dtype=bool)  # certified answers
+        asked = self._closed_forms(wa, a, wb, b, dist, p1, p2, normal, done)
+        found = self._fcl(asked, ra, xa, rb, xb, a, b, dist, p1, p2)
         diff = p2 - p1
         norm = np.linalg.norm(diff, axis=1)
-        quick = (dist > TOLERANCE) & (norm > 1e-12) & geom_a[2] & geom_b[2] & ~closed
-        normal = np.divide(diff, norm[:, None], out=np.zeros_like(diff),
-                           where=norm[:, None] > 1e-12)
-        for t in np.nonzero(closed)[0].tolist():
-            normal[t] = raws[t][3]
-        if quick.any():
-            u = normal[quick][:, None, :]
-            gap = obb.reach(geom_a[0][quick], geom_a[1][quick], u)[:, 0] + obb.reach(
-                geom_b[0][quick], geom_b[1][quick], -u)[:, 0]
-            quick[quick] = dist[quick] + gap <= TOLERANCE
-        for t in np.nonzero(~quick & ~closed)[0].tolist():
-            dist[t], p1[t], p2[t], normal[t] = checked(raws[t], *placed[t])
-        margin_a = np.array([side[1].shape.margin for side in sides_a])
-        margin_b = np.array([side[1].shape.margin for side in sides_b])
+        unit = np.divide(diff, norm[:, None], out=np.zeros_like(diff),
+                         where=norm[:, None] > 1e-12)
+        apart = found & (dist > TOLERANCE) & (norm > 1e-12)
+        polytopes = found & ta.polytope[ia] & tb.polytope[ib]
+        solids_a = Solids(ta.vertices, ia, ra, xa, ta.box[ia])
+        solids_b = Solids(tb.vertices, ib, rb, xb, tb.box[ib])
+        rows = np.flatnonzero(apart & polytopes)
+        if len(rows):
+            rows = rows[certify.separated(dist[rows], unit[rows], solids_a.rows(rows),
+                                          solids_b.rows(rows))]
+            normal[rows] = unit[rows]
+            done[rows] = True
+        rows = np.flatnonzero(polytopes & ~apart)
+        if len(rows):
+            inside = dist[rows] <= 0.0
+            # Penetrating, FCL's witness points lie inside the other solid: b to a.
+            *answer, separating = certify.penetration(
+                np.minimum(dist[rows], 0.0), p1[rows], p2[rows], -unit[rows],
+                inside & (norm[rows] > 1e-12), solids_a.rows(rows), solids_b.rows(rows))
+            ok = ~separating
+            for array, value in zip((dist, p1, p2, normal), answer, strict=True):
+                array[rows[ok]] = value[ok]
+            done[rows[ok]] = True
+        for t in np.flatnonzero(~done).tolist():
+            raw = (float(dist[t]), p1[t].copy(), p2[t].copy()) if found[t] else None
+            dist[t], p1[t], p2[t], normal[t] = self._certified(
+                raw, ta.parts[int(ia[t])], wa[t], tb.parts[int(ib[t])], wb[t])
+        margin_a, margin_b = ta.margin[ia], tb.margin[ib]
         dist -= margin_a + margin_b
         p1 += margin_a[:, None] * normal
         p2 -= margin_b[:, None] * normal
-        within = dist <= self.activation
-        if not within.any():
-            return
-        grad = np.zeros((k, self.checker.n))
-        chain = self.checker.world.chain
-        for sign, geom, point in ((-1.0, geom_a, p1), (1.0, geom_b, p2)):
-            moves = geom[3]
-            if moves is None:
-                continue
-            v = np.concatenate([transforms.cross(point, normal), normal], axis=1)
-            g = np.einsum("kij,kj->ki", self.basis()[samples], v)
-            grad += sign * g * chain.moved_mask[moves]
-        for t in np.nonzero(within)[0].tolist():
-            self.out[samples[t]].append(Contact(sides_a[t][1].owner, sides_b[t][1].owner,
-                                                float(dist[t]), p1[t], p2[t], normal[t],
-                                                grad[t]))
+        self._contacts(samples, a, b, dist, p1, p2, normal)
 
-    def _scalar(self, samples, sides_a, sides_b, moves_a, moves_b) -> None:
-        """`narrow` pair by pair: cheaper than array set-up for a handful of pairs."""
-        checker = self.checker
-        request = checker._request
-        for t, (s, (key_a, pa, pose_a), (key_b, pb_, pose_b)) in enumerate(
-                zip(samples, sides_a, sides_b, strict=True)):
-            query = self.queries[s]
-            a, b = query.placed(key_a, pa, pose_a), query.placed(key_b, pb_, pose_b)
-            d, p1, p2, n = signed_distance(request, a, pa.obj, b, pb_.obj)
+    def _closed_forms(self, wa, a: Side, wb, b: Side, dist, p1, p2, normal, done):
+        """Answer the pairs of upright boxes and cylinders (prism.py) in place; returns
+        which pairs FCL is to answer (not those two tilted boxes in contact, narrow.no_fcl)."""
+        asked = np.ones(len(wa), dtype=bool)
+        rows = np.flatnonzero(a.table.prism[a.index] & b.table.prism[b.index]).tolist()
+        if not rows:
+            return asked
+        placed = [(Placed(a.table.parts[a.index[t]].shape, wa[t]),
+                   Placed(b.table.parts[b.index[t]].shape, wb[t])) for t in rows]
+        boxes = [i for i, t in enumerate(rows) if a.table.box[a.index[t]]
+                 and b.table.box[b.index[t]]]
+        upright = dict(zip(boxes, prism.upright_boxes([placed[i] for i in boxes]), strict=True))
+        for i, t in enumerate(rows):
+            exact = upright.get(i)
+            if exact is None:
+                exact = prism.distance(*placed[i])
+            if exact is not None:
+                dist[t], p1[t], p2[t], normal[t] = exact
+                done[t] = True
+                asked[t] = False
+            elif no_fcl(*placed[i]):
+                asked[t] = False
+        return asked
+
+    def _fcl(self, asked, ra, xa, rb, xb, a: Side, b: Side, dist, p1, p2) -> np.ndarray:
+        """FCL's answers of the pairs asked, in place (world witness points); returns
+        which pairs it answered."""
+        rows = np.flatnonzero(asked)
+        found = np.zeros(len(asked), dtype=bool)
+        if not len(rows):
+            return found
+        rot, pos = _relative(ra[rows], xa[rows], rb[rows], xb[rows])
+        near = np.zeros((len(rows), 2, 3))
+        request = self.checker._request
+        result = fcl.DistanceResult()
+        objs_a, objs_b = a.table.objs, b.table.objs
+        answered = np.zeros(len(rows), dtype=bool)
+        for i, (t, ja, jb) in enumerate(zip(rows.tolist(), a.index[rows].tolist(),
+                                           b.index[rows].tolist(), strict=True)):
+            d = fcl_distance(request, objs_a[ja], objs_b[jb], rot[i], pos[i], result)
+            if d is not None:
+                dist[t] = d
+                near[i] = result.nearest_points
+                answered[i] = True
+        rows = rows[answered]
+        near = near[answered]
+        world = np.matmul(near, rb[rows].transpose(0, 2, 1)) + xb[rows][:, None]
+        p1[rows], p2[rows] = world[:, 0], world[:, 1]
+        found[rows] = True
+        return found
+
+    def _contacts(self, samples, a: Side, b: Side, dist, p1, p2, normal) -> None:
+        """The contacts within activation, with their joint gradients."""
+        within = np.flatnonzero(dist <= self.activation)
+        if not len(within):
+            return
+        grad = np.zeros((len(within), self.checker.n))
+        rows = samples[within]
+        chain = self.checker.world.chain
+        n = normal[within]
+        basis = self.basis()[rows]
+        for sign, side, point in ((-1.0, a, p1), (1.0, b, p2)):
+            if side.moves is None:
+                continue
+            v = np.concatenate([transforms.cross(point[within], n), n], axis=1)
+            g = np.matmul(basis, v[:, :, None])[:, :, 0]
+            g *= chain.moved_mask[side.moves[within]]
+            if sign > 0:
+                grad += g
+            else:
+                grad -= g
+        parts_a, parts_b = a.table.parts, b.table.parts
+        out = self.out
+        for s, ja, jb, d, pa, pb_, u, g in zip(
+                rows.tolist(), a.index[within].tolist(), b.index[within].tolist(),
+                dist[within].tolist(), p1[within], p2[within], normal[within], grad,
+                strict=True):
+            out[s].append(Contact(parts_a[ja].owner, parts_b[jb].owner, d, pa, pb_, u, g))
+
+    def _scalar(self, samples, a: Side, wa, b: Side, wb) -> None:
+        """`narrow` pair by pair (narrow.py's checks): cheaper than the arrays' set-up
+        for a handful of pairs. FCL is asked as in `_fcl`, so both paths get the
+        same answers from it."""
+        ra, xa, rb, xb = wa[:, :3, :3], wa[:, :3, 3], wb[:, :3, :3], wb[:, :3, 3]
+        rot, pos = _relative(ra, xa, rb, xb)
+        request = self.checker._request
+        result = fcl.DistanceResult()
+        mask = self.checker.world.chain.moved_mask
+        ta, tb = a.table, b.table
+        for t, (s, ja, jb) in enumerate(zip(samples.tolist(), a.index.tolist(),
+                                            b.index.tolist(), strict=True)):
+            pa, pb_ = ta.parts[ja], tb.parts[jb]
+            answer = None
+            if ta.prism[ja] and tb.prism[jb]:
+                answer = prism.distance(Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t]))
+            if answer is None:
+                raw = None
+                if not (ta.box[ja] and tb.box[jb]
+                        and no_fcl(Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t]))):
+                    d = fcl_distance(request, pa.obj, pb_.obj, rot[t], pos[t], result)
+                    if d is not None:
+                        near_a, near_b = result.nearest_points
+                        raw = (d, rb[t] @ near_a + xb[t], rb[t] @ near_b + xb[t])
+                answer = self._certified(raw, pa, wa[t], pb_, wb[t])
+            d, p1, p2, n = rounded(*answer, pa.shape.margin, pb_.shape.margin)
             if d > self.activation:
                 continue
-            grad = np.zeros(checker.n)
-            if moves_a is not None:
-                grad -= query.normal_gradient(int(moves_a[t]), p1, n)
-            if moves_b is not None:
-                grad += query.normal_gradient(int(moves_b[t]), p2, n)
-            self.out[s].append(Contact(pa.owner, pb_.owner, d, p1, p2, n, grad))
+            grad = np.zeros(self.checker.n)
+            basis = self.basis()[s]
+            if a.moves is not None:
+                grad -= (basis @ moment(p1, n)) * mask[a.moves[t]]
+            if b.moves is not None:
+                grad += (basis @ moment(p2, n)) * mask[b.moves[t]]
+            self.out[s].append(Contact(pa.owner, pb_.owner, float(d), p1, p2, n, grad))
+
+    def _certified(self, raw, pa: Part, wa, pb_: Part, wb):
+        """narrow.certified of FCL's answer (in the world) for one pair, asking FCL
+        again with both shapes in their world placements if it fails the check."""
+        a, b = Placed(pa.shape, wa), Placed(pb_.shape, wb)
+        request = self.checker._request
+        return certified(raw, a, b,
+                         again=lambda: narrow_fcl_distance(request, a, pa.obj, b, pb_.obj))
+
+
+def _relative(ra, xa, rb, xb):
+    """(rotations (k, 3, 3), positions (k, 3)) of frames a in frames b."""
+    return np.matmul(rb.transpose(0, 2, 1), ra), np.einsum("kji,kj->ki", rb, xa - xb)

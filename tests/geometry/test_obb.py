@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from tampcli.geometry import obb, transforms
+from tampcli.geometry.broad import FLOAT32_ERROR
 from tampcli.geometry.narrow import Placed, signed_distance
 from tampcli.geometry.parts import Part, fcl_object
 from tampcli.geometry.shapes import Shape, primitive
@@ -61,12 +62,11 @@ def test_principal_axes_make_a_long_solid_s_box_tight():
     assert np.prod(2 * half) < 0.5 * np.prod(hi - lo)
 
 
-@pytest.mark.parametrize("seed", [0, 1, 2])
-def test_gaps_are_lower_bounds_on_the_distance(seed):
+def _rows(seed):
+    """300 random pairs of parts (one FCL object per side: FCL never returns when asked
+    the distance of an object to itself) with their certified distances."""
     rng = np.random.default_rng(seed)
     shapes = _shapes(rng)
-    # One FCL object per side: FCL never returns when asked the distance of an object
-    # to itself (as happens when a pair's two sides share one CollisionObject).
     sides = [[Part("body:x", s, fcl_object(s)) for s in shapes] for _ in range(2)]
     rows = []
     for _ in range(300):
@@ -75,17 +75,34 @@ def test_gaps_are_lower_bounds_on_the_distance(seed):
         pa, pb = sides[0][ia], sides[1][ib]
         d = signed_distance(REQUEST, Placed(pa.shape, ta @ pa.shape.local), pa.obj,
                             Placed(pb.shape, tb @ pb.shape.local), pb.obj)[0]
-        rows.append((ta, pa, tb, pb, d))
-    ca, ra = obb.world(np.array([r[0] for r in rows]), np.array([r[1].obb_center for r in rows]),
-                       np.array([r[1].obb_rot for r in rows]))
-    cb, rb = obb.world(np.array([r[2] for r in rows]), np.array([r[3].obb_center for r in rows]),
-                       np.array([r[3].obb_rot for r in rows]))
-    ha = np.array([r[1].obb_half for r in rows])
-    hb = np.array([r[3].obb_half for r in rows])
-    box_gap = obb.gaps(ca, ra, ha, cb, rb, hb)
-    hull_gap = obb.hull_gaps(np.array([r[0] for r in rows]), obb.padded([r[1].hull for r in rows]),
-                             ra, np.array([r[2] for r in rows]),
-                             obb.padded([r[3].hull for r in rows]), rb, ca, cb)
+        rows.append((ta, ia, tb, ib, d))
+    return sides, rows
+
+
+def _hull_gaps(sides, rows, float32=False, beyond=None):
+    """obb.gaps and obb.hull_gaps of the rows, as broad.screen calls them."""
+    ta = np.array([r[0] for r in rows])
+    tb = np.array([r[2] for r in rows])
+    ia = np.array([r[1] for r in rows])
+    ib = np.array([r[3] for r in rows])
+    parts_a, parts_b = sides
+    ca, ra = obb.world(ta, np.array([parts_a[i].obb_center for i in ia]),
+                       np.array([parts_a[i].obb_rot for i in ia]))
+    cb, rb = obb.world(tb, np.array([parts_b[i].obb_center for i in ib]),
+                       np.array([parts_b[i].obb_rot for i in ib]))
+    ha = np.array([parts_a[i].obb_half for i in ia])
+    hb = np.array([parts_b[i].obb_half for i in ib])
+    dtype = np.float32 if float32 else float
+    hull = obb.hull_gaps(obb.PointSets([p.hull for p in parts_a], dtype), ia, ta, ra, ha,
+                         obb.PointSets([p.hull for p in parts_b], dtype), ib, tb, rb, hb, ca, cb,
+                         beyond)
+    return obb.gaps(ca, ra, ha, cb, rb, hb), hull, (ta, ia, ra, ca, tb, ib, rb, cb)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_gaps_are_lower_bounds_on_the_distance(seed):
+    sides, rows = _rows(seed)
+    box_gap, hull_gap, _ = _hull_gaps(sides, rows)
     dist = np.array([r[4] for r in rows])
     assert np.all(box_gap <= np.maximum(dist, 0.0) + 1e-9)
     assert np.all(hull_gap <= np.maximum(dist, 0.0) + 1e-9)
@@ -95,12 +112,48 @@ def test_gaps_are_lower_bounds_on_the_distance(seed):
     assert np.median(hull_gap[apart] / dist[apart]) > 0.5
 
 
-def test_reach_is_the_support_of_the_points():
+def test_hull_gaps_equal_every_point_on_all_seven_axes():
+    """hull_gaps takes a solid's support on its own box axes from the box (tight on its
+    points) for many pairs: the same bound as projecting all points on all 7
+    directions (what it does for a few pairs); and in float32 (the screen's) it
+    stays within broad.FLOAT32_ERROR of it."""
+    sides, rows = _rows(3)
+    assert len(rows) >= obb.GROUPED_FROM
+    _, hull, (ta, ia, ra, ca, tb, ib, rb, cb) = _hull_gaps(sides, rows)
+    _, hull32, _ = _hull_gaps(sides, rows, float32=True)
+    _, few, _ = _hull_gaps(sides, rows[:10])
+    np.testing.assert_allclose(few, hull[:10], atol=1e-12)
+    # With a threshold, the bound decides every pair as the full one does.
+    for beyond in (0.0, 0.05):
+        cut = _hull_gaps(sides, rows, beyond=np.full(len(rows), beyond))[1]
+        np.testing.assert_array_equal(cut <= beyond, hull <= beyond)
+        assert np.all(cut <= hull + 1e-12)
+        assert 0 < (hull <= beyond).sum() < len(rows)
+    for t in range(len(rows)):
+        d = cb[t] - ca[t]
+        line = d / np.linalg.norm(d)
+        axes = np.vstack([ra[t].T, rb[t].T, line])
+        axes *= np.where(axes @ d < 0, -1.0, 1.0)[:, None]
+        pa = sides[0][ia[t]].hull @ ta[t][:3, :3].T + ta[t][:3, 3]
+        pb = sides[1][ib[t]].hull @ tb[t][:3, :3].T + tb[t][:3, 3]
+        full = ((pb @ axes.T).min(axis=0) - (pa @ axes.T).max(axis=0)).max()
+        assert hull[t] == pytest.approx(full, abs=1e-12)
+        assert abs(hull32[t] - full) <= 2 * FLOAT32_ERROR * (1.0 + 0.5)
+
+
+@pytest.mark.parametrize("n", [6, obb.PADDED_POINTS // 12 + 5])
+def test_reach_and_support_points_of_point_sets_of_several_sizes(n):
+    """Both ways `reach` takes the solids (padded for a few, set by set for many)."""
     rng = np.random.default_rng(4)
-    frames = np.array([_random_pose(rng) for _ in range(5)])
-    points = rng.normal(size=(5, 7, 3))
-    axes = rng.normal(size=(5, 2, 3))
-    got = obb.reach(frames, points, axes)
-    for k in range(5):
-        world = points[k] @ frames[k, :3, :3].T + frames[k, :3, 3]
+    sets = [rng.normal(size=(v, 3)) for v in (7, 3, 12)]
+    points = obb.PointSets(sets)
+    assert points.gathered(n) == (n < 100)
+    index = rng.integers(len(sets), size=n)
+    frames = np.array([_random_pose(rng) for _ in index])
+    axes = rng.normal(size=(n, 2, 3))
+    got = obb.reach(points, index, frames[:, :3, :3], frames[:, :3, 3], axes)
+    best = obb.support_points(points, index, frames[:, :3, :3], frames[:, :3, 3], axes[:, 0])
+    for k, i in enumerate(index):
+        world = sets[i] @ frames[k, :3, :3].T + frames[k, :3, 3]
         np.testing.assert_allclose(got[k], (world @ axes[k].T).max(axis=0))
+        np.testing.assert_allclose(best[k], world[(world @ axes[k, 0]).argmax()])
