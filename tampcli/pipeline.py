@@ -270,6 +270,12 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
         blocker = blocker_of(getattr(result, "worst_constraint", None), movable)
         if blocker is not None:
             source.learn(blocker)
+        impossible = getattr(result, "impossible", None)
+        if impossible is not None:
+            action, obj = impossible
+            source.forbid_operators(frozenset(
+                op.name for op in inputs.task.operators if op.action == action
+                and modes.get_mode(action).bind(op.args)["object"] == obj))
 
     bnb_start = time.perf_counter()
     search = dict(is_geometric=lambda op: modes.get_mode(op.action).geometric,

@@ -347,10 +347,19 @@ def _body(src: TomlSource, index: int, data: dict) -> Body:
     fixed = r.boolean("fixed", False)
     if mass is not None and fixed:
         raise r.error("a fixed object does not move: `mass` is only for movable ones", "mass")
-    return Body(name=name, shape=shape, size=size, pose=r.pose("pose"),
+    body = Body(name=name, shape=shape, size=size, pose=r.pose("pose"),
                 fixed=fixed, color=r.color("color", DEFAULT_COLOR),
                 mesh=mesh, urdf=urdf, scale=scale, mass=mass,
                 line=src.line("objects", index, "name"))
+    if not fixed and not is_upright(body):
+        # Grips are built in the body's frame and every placement is upright: a body
+        # lying on its side would be gripped through itself, or refused as too wide
+        # (a false proof of infeasibility).
+        tilt = math.degrees(math.acos(min(1.0, max(-1.0, float(body.matrix[2, 2])))))
+        raise r.error(f"a movable object must start upright (its pose turned about z "
+                      f"only): {name!r} is tilted {tilt:.1f} deg; a fixed one may lie any "
+                      "way", "pose")
+    return body
 
 
 def _region(src: TomlSource, index: int, data: dict) -> Region:

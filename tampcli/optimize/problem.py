@@ -13,7 +13,13 @@ from dataclasses import dataclass, field
 from tampcli.optimize.bodies import body_info, start_support
 from tampcli.optimize.kinds import KINDS, SYMBOLIC
 from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.skeleton import Lowering, LoweringError, MotionPhase, Step
+from tampcli.optimize.skeleton import (
+    ImpossibleAction,
+    Lowering,
+    LoweringError,
+    MotionPhase,
+    Step,
+)
 
 
 @dataclass(frozen=True)
@@ -28,6 +34,8 @@ class TrajectoryProblem:
     options: OptimizeOptions = OptimizeOptions()
     planar: bool = False
     error: str | None = None  # the skeleton cannot be lowered (infeasible, proved)
+    # (action schema, object) of an ImpossibleAction: the error holds for every skeleton
+    impossible: tuple[str, str] | None = None
     grip_params: tuple[int, ...] = ()  # steps with one continuous grip parameter, in order
     checker: object = field(default=None, repr=False)  # geometry.collision.CollisionChecker
 
@@ -72,7 +80,9 @@ def lower(skeleton, scene, modes, world, options: OptimizeOptions | None = None,
                 raise LoweringError(f"{op.name}: unknown mode {mode.kind!r}")
             lo.steps.append(kind.lower(lo, i, op, mode))
     except LoweringError as err:
-        return TrajectoryProblem(steps=(), motions=(), error=str(err), **base)
+        impossible = (err.action, err.obj) if isinstance(err, ImpossibleAction) else None
+        return TrajectoryProblem(steps=(), motions=(), error=str(err), impossible=impossible,
+                                 **base)
     return TrajectoryProblem(steps=tuple(lo.steps), motions=tuple(lo.motions),
                              grip_params=tuple(lo.grip_params), **base)
 

@@ -57,6 +57,16 @@ class LoweringError(Exception):
     """The skeleton cannot be lowered: infeasible, proved (never raised out of `lower`)."""
 
 
+class ImpossibleAction(LoweringError):
+    """No skeleton can do `action` to `obj`, whatever its other arguments and whatever
+    comes before (no grasp of the object fits the gripper): every ground action of that
+    schema moving that object is infeasible, proved."""
+
+    def __init__(self, message: str, action: str, obj: str):
+        super().__init__(message)
+        self.action, self.obj = action, obj
+
+
 class Lowering:
     """The walk over a skeleton that lowering is: what is held, what rests where."""
 

@@ -41,7 +41,8 @@ def solve(problem: TrajectoryProblem, stage: str, warm: TrajectoryResult | None 
     run.cutoff = cutoff
     if problem.error is not None:
         return run.result("infeasible", worst_constraint=problem.error, proved=True,
-                          bound_kind="proved", violation=math.inf)
+                          bound_kind="proved", violation=math.inf,
+                          impossible=problem.impossible)
     try:
         if stage == "final":
             return final(run)

@@ -144,6 +144,32 @@ class LearningSource:
         """A skeleton found feasible: its supersequences are not worth an NLP."""
         self._solved.append(tuple(names))
 
+    def forbid_operators(self, names: frozenset[str]) -> None:
+        """Operators proved infeasible in every skeleton (no grasp of an object fits):
+        gone from the task, the enumerations start again without them. The bound
+        stays proved: no feasible skeleton is lost."""
+        names = frozenset(names) & frozenset(op.name for op in self.task.operators)
+        if not names:
+            return
+        self.task = dataclasses.replace(self.task, operators=tuple(
+            op for op in self.task.operators if op.name not in names))
+        self._compiled = compile_task(self.task, self.blockers, self._moves)
+        self._compiled_ops = {op.name: op for op in self._compiled.operators}
+        self._fits.clear()
+
+        def uses(plan) -> bool:
+            return any(name in names for name in plan.names)
+
+        self._plain, self._plain_done = self._make(self.task), False
+        self._plain_queue = deque(p for p in self._plain_queue if not uses(p))
+        self._learned = self._make(self._compiled) if self.blockers else None
+        for prefix in self._forbidden:
+            self._plain.forbid_prefix(prefix)
+            if self._learned is not None:
+                self._learned.forbid_prefix(prefix)
+        self._deferred = [d for d in self._deferred if not uses(d[2])]
+        heapq.heapify(self._deferred)
+
     def forbid_prefix(self, names: tuple[str, ...]) -> None:
         self._forbidden.append(tuple(names))
         self._plain.forbid_prefix(names)

@@ -106,3 +106,15 @@ def test_blind4_p01_first_version_names_the_place_not_only_the_pick(tmp_path):
     assert solution.reason.startswith("every skeleton was tried (3; loopless ones, then")
     detail = solution.reason.partition("[violated at the NLP's best point, by action: ")[2]
     assert "(pick cube counter)" in detail and "(place cube bay)" in detail, solution.reason
+
+
+def test_an_object_no_grasp_fits_makes_the_problem_unsolvable_at_once():
+    """blind6 p08 (written blind): a 7.5 cm case, the Panda takes 7.3 cm at most, and no
+    push. The proof holds for every pick of the case, wherever it stands: the search
+    drops them all and ends `unsolvable`, not at its limits."""
+    folder = ROOT / "problems" / "blind6" / "p08"
+    solution = solve_paths(InputPaths(str(folder / "domain.pddl"), str(folder / "p08.pddl")),
+                           SolveOptions(BnBOptions(time_limit=60)))
+    assert solution.status == "unsolvable", solution.reason
+    assert "no grasp of case fits" in solution.reason
+    assert len(solution.skeletons) == 1

@@ -122,3 +122,26 @@ def test_object_mass(tmp_path, domain, problem, after, mass, error):
         load_scene(path, domain, problem)
     assert info.value.key == "objects.mass" and error in info.value.message
     assert info.value.line == text.splitlines().index(f"mass = {mass}") + 1
+
+
+@pytest.mark.parametrize(("pose", "error"), [
+    ("[0.45, -0.2, 0.025, 0.3]", None),  # turned about z only
+    ("[0.45, -0.2, 0.025, 1.5708, 0.0, 0.0]", "'a' is tilted 90.0 deg"),  # lying on its side
+    ("[0.45, -0.2, 0.025, 3.1416, 0.0, 0.0]", "'a' is tilted 180.0 deg"),  # upside down
+])
+def test_a_movable_object_must_start_upright(tmp_path, domain, problem, pose, error):
+    """Grips are built in the object's frame and every placement is upright: a lying
+    movable body was gripped through itself, or refused as too wide (a false proof)."""
+    text = (DATA / "p01.scene.toml").read_text()
+    old = "pose = [0.45, -0.2, 0.025, 0.3]"
+    assert old in text
+    text = text.replace(old, f"pose = {pose}", 1)
+    path = tmp_path / "p01.scene.toml"
+    path.write_text(text)
+    if error is None:
+        load_scene(path, domain, problem)
+        return
+    with pytest.raises(SceneError) as info:
+        load_scene(path, domain, problem)
+    assert info.value.key == "objects.pose" and error in info.value.message
+    assert "must start upright" in info.value.message

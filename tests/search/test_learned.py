@@ -172,3 +172,16 @@ def test_a_copy_that_also_moves_a_body_left_alone_is_not_deferred():
               and not any("b2" in a for a in n[:-2])]
     assert both and padded and min(both) < min(padded)
     assert len(later[min(both)]) == 6 and min(both) < 3  # right after the clearing one
+
+
+def test_operators_proved_impossible_are_gone_from_every_later_skeleton():
+    task, names = pen(2)
+    src = source(task)
+    first = next(src)
+    gone = frozenset(op.name for op in task.operators if op.name.startswith("(pick b1 "))
+    src.forbid_operators(gone)
+    rest = list(src)
+    assert rest and not any(set(p.names) & gone for p in rest)
+    everything = {p.names for p in TopK(task, loopless=True)}
+    assert {p.names for p in rest} | {first.names} == \
+        {n for n in everything if not set(n) & gone} | {first.names}

@@ -20,7 +20,7 @@ from tampcli.optimize import grasp_families as F
 from tampcli.optimize.bodies import TOUCH_TOLERANCE, pose_matrix
 from tampcli.optimize.grips import touch_distance
 from tampcli.optimize.kinds.base import ModeKind
-from tampcli.optimize.skeleton import LoweringError, Step
+from tampcli.optimize.skeleton import ImpossibleAction, LoweringError, Step
 from tampcli.optimize.values import GripChoice
 
 
@@ -82,7 +82,8 @@ class Grasp(ModeKind):
             families, why = F.possible(getattr(mode, "grasps", None), lo.infos[obj],
                                        lo.gripper_opening)
             if not families:
-                raise LoweringError(f"{label}: no grasp of {obj} fits ({'; '.join(why)})")
+                raise ImpossibleAction(f"{label}: no grasp of {obj} fits ({'; '.join(why)})",
+                                       op.action, obj)
             kind = Grasp(families)
         k = lo.motion(index, "free", None, None, {obj})
         lo.last_contact = frozenset({lo.support.get(obj)} - {None})
