@@ -25,8 +25,8 @@ from tampcli.optimize.stages import keyframe_layout, keyframe_rows
 from tampcli.optimize.verify import verify
 from tampcli.pddl import parser
 
-from .helpers import ROOT, SCENES, ops
-from .test_gradients import _check, _fd
+from .helpers import ROOT, SCENES, central_differences, ops
+from .test_gradients import _check
 
 DOMAIN = ROOT / "domains" / "robust-arm" / "domain.pddl"
 SHELF = SCENES / "shelf.pddl"
@@ -56,7 +56,7 @@ def test_pitch_grip_jacobians(shelf, psi, roll):
 
     h = held_pose(kin.frame(q), grip, t)
     analytic = np.vstack([h.dpos_dq, h.daxes_dq[:, 0], h.daxes_dq[:, 1], h.daxes_dq[:, 2]])
-    np.testing.assert_allclose(analytic, _fd(lambda qq: value(qq, t), q, 1e-6), atol=1e-6)
+    np.testing.assert_allclose(analytic, central_differences(lambda qq: value(qq, t), q, 1e-6), atol=1e-6)
     dt = np.concatenate([h.dpos_dt, h.daxes_dt[:, 0], h.daxes_dt[:, 1], h.daxes_dt[:, 2]])
     np.testing.assert_allclose(dt, (value(q, t + 1e-6) - value(q, t - 1e-6)) / 2e-6, atol=1e-6)
     # The grip is a rigid motion: the grasp point is the tool origin, the hand level.

@@ -33,8 +33,8 @@ from tampcli.optimize.stages import Rows, final_layout, final_rows
 from tampcli.optimize.values import placement_blocks
 from tampcli.optimize.verify import verify
 
-from .helpers import ops
-from .test_gradients import _check, _fd
+from .helpers import central_differences, ops
+from .test_gradients import _check
 
 PUSH = "(push o start goal floor)"
 BOX = BodyInfo("b", "box", (0.06, 0.04, 0.03), False, (0.0, 0.0, 0.03, 0.0), True)
@@ -240,7 +240,7 @@ def test_same_yaw_and_cone_rows_on_poses():
         for block, a in j.items():
             jac[at:at + len(v), (0 if block == "a" else 3):(3 if block == "a" else 6)] += a
         at += len(v)
-    np.testing.assert_allclose(jac, _fd(lambda xx: rows_of(xx)[0], x, 1e-6), atol=1e-6)
+    np.testing.assert_allclose(jac, central_differences(lambda xx: rows_of(xx)[0], x, 1e-6), atol=1e-6)
     assert vals[0] > 0 and vals[1] > 0  # (0.05, 0.3) is 15 deg off the -y face's normal
 
 
