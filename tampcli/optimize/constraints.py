@@ -57,6 +57,14 @@ def upright(rows: RowSet, step: str, P: PoseX, what: str) -> None:
     rows.add(P.az[:2].copy(), P.through(g), Label(step, f"{what} tilted", "rad"))
 
 
+def tilt_within(rows: RowSet, step: str, P: PoseX, what: str, tilt: float) -> None:
+    """P's z axis within `tilt` (rad) of the vertical: az_z >= cos(tilt)."""
+    g = _g(1)
+    g[0, 11] = 1.0
+    rows.add(np.array([P.az[2] - np.cos(tilt)]), P.through(g),
+             Label(step, f"{what} tilted", ""))
+
+
 def stays_up(rows: RowSet, step: str, P: PoseX) -> None:
     """az_z >= DOWN: excludes the upside-down branch of the upright equations."""
     g = _g(1)

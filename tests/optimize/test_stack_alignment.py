@@ -118,3 +118,24 @@ def test_keyframe_objective_is_the_motion_alone_and_rows_bound_the_turn():
                           for what in ("centre off the centre of {}",
                                        "turned from the faces of {}",
                                        "turned from the faces of {}")]
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_tilt_row_matches_finite_differences(seed):
+    """constraints.tilt_within (what is carried, where a move ends) on a pose whose 12
+    numbers are a linear map of x."""
+    from tampcli.optimize import constraints as C
+
+    def rows_at(x):
+        rows = RowSet()
+        C.tilt_within(rows, "s", _linear("p", x), "o", math.radians(3.0))
+        return rows.assemble({"p": slice(0, 3)}, 3)
+
+    x = np.random.default_rng(seed).uniform(-0.5, 0.5, 3)
+    val, jac = rows_at(x)
+    np.testing.assert_allclose(jac, central_differences(lambda xx: rows_at(xx)[0], x),
+                               atol=1e-7)
+    upright = PoseX(np.concatenate([np.zeros(3), [1, 0, 0], [0, 1, 0], [0, 0, 1]]))
+    rows = RowSet()
+    C.tilt_within(rows, "s", upright, "o", math.radians(3.0))
+    assert rows.assemble({}, 0)[0][0] == pytest.approx(1 - math.cos(math.radians(3.0)))

@@ -7,6 +7,8 @@ revised backwards from the keyframe that follows (see `reseed`).
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from tampcli.optimize import constraints as C
@@ -16,6 +18,7 @@ from tampcli.optimize.layout import keyframe_block
 from tampcli.optimize.skeleton import LoweringError, Step
 
 MOVE_HOVER = 0.08  # m: a move's keyframe starts this far above its target
+HELD_TILT = math.radians(3.0)  # rad: the most what is carried may lean where a move ends
 
 
 def target_rect(problem, target):
@@ -104,6 +107,13 @@ class Move(ModeKind):
             lo, hi = target_rect(walk.problem, step.target)
             C.point_in_rect(walk.rows.ineq, step.name, tool, lo, hi,
                             f"tool outside {step.target}")
+        if walk.held is not None and not walk.planar:
+            # What is carried stays nearly upright where a move ends: a pinch grip
+            # tilted about its fingers lets the object swing back under gravity
+            # (blind6 p04: held 9 deg over a scanner, 9 deg off in the physics replay).
+            name, grip_step = walk.held
+            H = walk.gripped(k, grip_step)[4]
+            C.tilt_within(walk.rows.ineq, step.name, H, name, HELD_TILT)
         walk.collide(k, step, walk.held_now(), frame, set())
 
     def switch(self, walk, step):
