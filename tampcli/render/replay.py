@@ -248,9 +248,14 @@ class Replay:
             poses, closed = self._resting(k), self._closed_before[k]
             if k in self._grasp:
                 poses[phase.attached] = self._tool_pose(q) @ self._grasp[k]
-        # Held in a grasp (fingers closed), as opposed to pushed along.
+        # Held in a grasp (fingers closed), as opposed to pushed along; a symbolic
+        # action (no mode switch) still holds it at its end (blind6 p04: a widget let
+        # go of during a `scan`, 1 cm over the scanner, fell in the physics replay).
+        kind = self._kinds[k]
+        holds = (kind is not None and not kind.geometric) if after else \
+            (kind is None or kind.holds)
         held = phase.attached if phase.attached is not None and self._closed_before[k] and \
-            not after and (self._kinds[k] is None or self._kinds[k].holds) else None
+            holds else None
         return FrameState(t, tuple(q), poses, closed, phase_label(phase), self._step[k],
                           self.steps, held)
 

@@ -178,3 +178,36 @@ def test_world_sets_the_fingers_it_is_given(panda):
     sim = simulator(world)
     got = [sim.pb.getJointState(sim.robot, j, physicsClientId=sim.client)[0] for j in sim.fingers]
     assert got == pytest.approx([0.012, 0.031])
+
+
+def test_a_symbolic_action_holds_what_it_held_to_its_end(panda):
+    """blind6 p04: a `scan` (mode none) while holding a widget. The replay let go of it
+    halfway through the scan's pause (the "after" half), and the physics replay
+    dropped it onto the scanner."""
+    import dataclasses
+
+    from render_solutions import _pose
+
+    from tampcli.geometry import transforms
+    from tampcli.solution import Phase
+
+    sol, world = panda
+    pick, carry = sol.phases[1], sol.phases[2]
+    mid = (carry.start + carry.end) // 2
+    phases = list(sol.phases[:2]) + [
+        Phase(None, carry.start, mid, "a"), Phase("(scan a)", mid, mid, "a"),
+        Phase(None, mid, carry.end, "a")] + list(sol.phases[3:])
+    q = np.asarray(sol.trajectory)
+    grasp = transforms.pose_inverse(world.tool_pose(q[pick.end])) @ \
+        transforms.pose_from_xyzquat(sol.objects["a"][2])
+    at_mid = _pose(world.tool_pose(q[mid]) @ grasp)
+    a = sol.objects["a"]
+    b = sol.objects["b"]
+    scanned = dataclasses.replace(
+        sol, phases=tuple(phases), plan=[sol.plan[0], "(scan a)", *sol.plan[1:]],
+        objects={"a": a[:3] + [at_mid, at_mid] + a[3:], "b": b + b[:2]})
+    replay = Replay(scanned, world.tool_pose, duration=2.0, pause=0.5, mode_kind=lambda x: {
+        "pick": "grasp", "place": "place", "scan": "none", "note": "none"}[schema_of(x)])
+    scanning = [s for s in replay.states(40) if s.label == "(scan a)"]
+    assert len(scanning) > 10
+    assert all(s.held == "a" and s.fingers_closed for s in scanning)
