@@ -124,11 +124,14 @@ class Replay:
         if shape == "urdf":
             return pb.loadURDF(str(folder / obj["urdf"]), pos, quat, useFixedBase=True,
                                physicsClientId=self.c)
-        kw = {"box": dict(shapeType=pb.GEOM_BOX, halfExtents=[s / 2 for s in size]),
-              "cylinder": dict(shapeType=pb.GEOM_CYLINDER, radius=size[0], height=size[1]),
-              "sphere": dict(shapeType=pb.GEOM_SPHERE, radius=size[0]),
-              "mesh": dict(shapeType=pb.GEOM_MESH, fileName=str(folder / obj.get("mesh", "")),
-                           meshScale=obj.get("scale", [1.0, 1.0, 1.0]))}[shape]
+        # Built for the shape at hand only: a sphere's size has one number.
+        kw = {"box": lambda: dict(shapeType=pb.GEOM_BOX, halfExtents=[s / 2 for s in size]),
+              "cylinder": lambda: dict(shapeType=pb.GEOM_CYLINDER, radius=size[0],
+                                       height=size[1]),
+              "sphere": lambda: dict(shapeType=pb.GEOM_SPHERE, radius=size[0]),
+              "mesh": lambda: dict(shapeType=pb.GEOM_MESH,
+                                   fileName=str(folder / obj.get("mesh", "")),
+                                   meshScale=obj.get("scale", [1.0, 1.0, 1.0]))}[shape]()
         col = pb.createCollisionShape(physicsClientId=self.c, **kw)
         return pb.createMultiBody(0.0, col, -1, pos, quat, physicsClientId=self.c)
 

@@ -154,7 +154,23 @@ def goal_failures(rp: Replay, goal, movable: list[str]) -> list[str]:
     return msgs
 
 
-def check_replay(rp: Replay, sol: dict, goal) -> list[Violation]:
+def _push_actions(sol: dict, solution: Path | None) -> set[str] | None:
+    """The action schemas whose mode is `push` in the solution's modes file (None when
+    there is none to read): a `move` action spans a motion with what it carries
+    attached too, and is no push."""
+    path = sol.get("modes")
+    if not path or solution is None:
+        return None
+    try:
+        modes = _resolve(path, solution)
+    except FileNotFoundError:
+        return None
+    table = tomllib.loads(modes.read_text())
+    return {name for name, spec in table.items()
+            if isinstance(spec, dict) and spec.get("mode") == "push"}
+
+
+def check_replay(rp: Replay, sol: dict, goal, pushes: set[str] | None = None) -> list[Violation]:
     names = sol["robot"]["joints"]
     traj = np.array(sol["trajectory"], dtype=float)
     phases = sol["phases"]
@@ -169,7 +185,8 @@ def check_replay(rp: Replay, sol: dict, goal) -> list[Violation]:
         att, s, e = ph["attached"], ph["start"], ph["end"]
         for n in movable:
             rp.place(n, poses[n][k])
-        pushing = att is not None and ph["action"] is not None and e > s
+        pushing = att is not None and ph["action"] is not None and e > s and (
+            pushes is None or ph["action"].strip("()").split()[0] in pushes)
         if att and att != held:
             rp.set_q(names, traj[s], not own_fingers)
             rel = np.linalg.inv(rp.hand()) @ poses[att][k]
@@ -241,7 +258,7 @@ def check_solution(solution: Path, scene: Path | None = None,
     problem = Path(problem) if problem else _resolve(sol["problem"], Path(solution))
     replay = Replay(scene)
     try:
-        return check_replay(replay, sol, read_goal(problem))
+        return check_replay(replay, sol, read_goal(problem), _push_actions(sol, Path(solution)))
     finally:
         replay.close()
 

@@ -158,3 +158,36 @@ def test_stacked_footprint_lies_inside_the_top_face(dx, yaw_deg, dz, holds):
     finally:
         replay.close()
     assert (found == []) == holds, found
+
+
+def test_a_move_action_carrying_an_object_is_no_push(solved):
+    """blind6 p04: `(move feeder scanner)` spans a motion with the widget attached; by
+    the modes file it is a move (the widget held), not a push (kept on its support)."""
+    sol, scene, problem = solved["arm"]
+    sol = copy.deepcopy(sol)
+    carry = next(ph for ph in sol["phases"] if ph["action"] is None and ph["attached"])
+    carry["action"] = "(move start goal)"
+    replay = Replay(scene)
+    try:
+        as_move = check_replay(replay, sol, read_goal(problem), pushes={"push"})
+        unknown = check_replay(replay, sol, read_goal(problem))
+    finally:
+        replay.close()
+    assert as_move == []
+    assert any("lifts or tips" in v.message for v in unknown)
+
+
+def test_a_sphere_in_the_scene(solved, tmp_path):
+    """blind6 p05's clutter has balls: the checker's scene reader built every shape's
+    arguments at once, and a sphere's one-number size failed the cylinder's."""
+    sol, scene, problem = solved["arm"]
+    text = scene.read_text() + ('\n[[objects]]\nname = "ball"\nshape = "sphere"\n'
+                                'size = [0.03]\npose = [-0.5, 0.5, 0.03]\nfixed = true\n')
+    ball = tmp_path / scene.name
+    ball.write_text(text)
+    replay = Replay(ball)
+    try:
+        assert "ball" in replay.bodies
+        assert check_replay(replay, copy.deepcopy(sol), read_goal(problem)) == []
+    finally:
+        replay.close()
