@@ -110,12 +110,20 @@ class _TimedSkeletons:
     """Wraps the skeleton source: counts the time spent producing skeletons
     (search.learned.LearningSource: its bound and learning pass through)."""
 
-    # what the LearningSource below yields
-    scope = ("loopless ones, then, none being feasible, those passing a symbolic state "
-             "twice at most (a regrasp)")
-
     def __init__(self, topk, timers: Timers):
         self.topk, self.timers = topk, timers
+
+    @property
+    def scope(self) -> str:
+        """Which skeletons the LearningSource yields, in words."""
+        words = ("loopless ones, then, none being feasible, those passing a symbolic state "
+                 "twice at most (a regrasp)")
+        gone = sorted(self.topk.impossible)
+        if gone:
+            words += (f"; less every skeleton with one of {len(gone)} action(s) proved "
+                      f"impossible in any skeleton ({', '.join(gone[:3])}"
+                      f"{' ...' if len(gone) > 3 else ''})")
+        return words
 
     def forbid_prefix(self, names):
         self.topk.forbid_prefix(names)
@@ -272,10 +280,16 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
             source.learn(blocker)
         impossible = getattr(result, "impossible", None)
         if impossible is not None:
-            action, obj = impossible
+            action, obj, role = impossible
+
+            def matches(op) -> bool:
+                if op.action != action:
+                    return False
+                bound = modes.get_mode(action).bind(op.args)
+                return bound["object"] == obj and (role is None or bound[role[0]] == role[1])
+
             source.forbid_operators(frozenset(
-                op.name for op in inputs.task.operators if op.action == action
-                and modes.get_mode(action).bind(op.args)["object"] == obj))
+                op.name for op in inputs.task.operators if matches(op)))
 
     bnb_start = time.perf_counter()
     search = dict(is_geometric=lambda op: modes.get_mode(op.action).geometric,

@@ -124,3 +124,14 @@ def inside_rect(xy, rect: BodyInfo, inset: float) -> bool:
     if rect.disk:
         return math.hypot(u, v) <= rect.half[0] - inset
     return abs(u) <= rect.half[0] - inset and abs(v) <= rect.half[1] - inset
+
+
+def region_misfit(obj: str, info: BodyInfo, region) -> str | None:
+    """Why the object's footprint fits the region in no orientation (None: it fits
+    one way or the other)."""
+    w, h = region.size
+    a, b = 2 * info.half[0], 2 * info.half[1]
+    if (a <= w and b <= h) or (b <= w and a <= h):
+        return None
+    return (f"{obj} ({100 * a:.1f} x {100 * b:.1f} cm) does not fit region {region.name} "
+            f"({100 * w:.1f} x {100 * h:.1f} cm)")

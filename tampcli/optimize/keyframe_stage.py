@@ -10,6 +10,7 @@ import time
 
 import numpy as np
 
+from tampcli.optimize.bodies import region_misfit
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
 from tampcli.optimize.init import keyframe_guess
@@ -37,12 +38,9 @@ def too_small(problem) -> str | None:
     regions = {r.name: r for r in problem.scene.regions}
     for step in problem.steps:
         if step.kind.places and step.target in regions:
-            w, h = regions[step.target].size
-            info = problem.bodies[step.obj]
-            a, b = 2 * info.half[0], 2 * info.half[1]
-            if not ((a <= w and b <= h) or (b <= w and a <= h)):
-                return (f"{step.name}: {step.obj} ({100 * a:.1f} x {100 * b:.1f} cm) does not "
-                        f"fit region {step.target} ({100 * w:.1f} x {100 * h:.1f} cm)")
+            why = region_misfit(step.obj, problem.bodies[step.obj], regions[step.target])
+            if why:
+                return f"{step.name}: {why}"
     return None
 
 

@@ -34,8 +34,9 @@ class TrajectoryProblem:
     options: OptimizeOptions = OptimizeOptions()
     planar: bool = False
     error: str | None = None  # the skeleton cannot be lowered (infeasible, proved)
-    # (action schema, object) of an ImpossibleAction: the error holds for every skeleton
-    impossible: tuple[str, str] | None = None
+    # (action schema, object, role or None) of an ImpossibleAction: the error holds for
+    # every skeleton
+    impossible: tuple | None = None
     grip_params: tuple[int, ...] = ()  # steps with one continuous grip parameter, in order
     checker: object = field(default=None, repr=False)  # geometry.collision.CollisionChecker
 
@@ -80,7 +81,8 @@ def lower(skeleton, scene, modes, world, options: OptimizeOptions | None = None,
                 raise LoweringError(f"{op.name}: unknown mode {mode.kind!r}")
             lo.steps.append(kind.lower(lo, i, op, mode))
     except LoweringError as err:
-        impossible = (err.action, err.obj) if isinstance(err, ImpossibleAction) else None
+        impossible = (err.action, err.obj, err.role) if isinstance(err, ImpossibleAction) \
+            else None
         return TrajectoryProblem(steps=(), motions=(), error=str(err), impossible=impossible,
                                  **base)
     return TrajectoryProblem(steps=tuple(lo.steps), motions=tuple(lo.motions),

@@ -46,8 +46,9 @@ class TrajectoryResult:
     bound_kind: str | None = None  # "proved" | "heuristic"
     proved: bool = False
     # Proved for every skeleton: no ground action of this schema may move this object
-    # (skeleton.ImpossibleAction): (action schema, object).
-    impossible: tuple[str, str] | None = None
+    # (with this mode role, when given; skeleton.ImpossibleAction): (action schema,
+    # object, (role, value) or None).
+    impossible: tuple | None = None
     # Path stage, failed: the skeleton's first N actions, through the action the motion
     # that failed leads to (what the failure depends on besides the keyframes).
     failed_actions: int | None = None

@@ -58,13 +58,15 @@ class LoweringError(Exception):
 
 
 class ImpossibleAction(LoweringError):
-    """No skeleton can do `action` to `obj`, whatever its other arguments and whatever
-    comes before (no grasp of the object fits the gripper): every ground action of that
-    schema moving that object is infeasible, proved."""
+    """No skeleton can do `action` to `obj` (with `role` = (mode role, value), e.g.
+    ("on", "goal"), when given), whatever its other arguments and whatever comes
+    before: no grasp of the object fits the gripper; its footprint fits the region in
+    no orientation. Every such ground action is infeasible, proved."""
 
-    def __init__(self, message: str, action: str, obj: str):
+    def __init__(self, message: str, action: str, obj: str,
+                 role: tuple[str, str] | None = None):
         super().__init__(message)
-        self.action, self.obj = action, obj
+        self.action, self.obj, self.role = action, obj, role
 
 
 class Lowering:

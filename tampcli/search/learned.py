@@ -106,6 +106,7 @@ class LearningSource:
         self.task, self._make, self._moves = task, make_topk, moves
         self.loopless = loopless
         self.revisits = 0  # times more than once a drawn plan may pass a state
+        self.impossible: frozenset[str] = frozenset()  # operators forbid_operators took out
         self._make_regrasps = make_regrasps
         self._cheapest = None  # the cost of the task's cheapest plan, once pulled
         self._by_name = {op.name: op for op in task.operators}
@@ -151,6 +152,7 @@ class LearningSource:
         names = frozenset(names) & frozenset(op.name for op in self.task.operators)
         if not names:
             return
+        self.impossible |= names
         self.task = dataclasses.replace(self.task, operators=tuple(
             op for op in self.task.operators if op.name not in names))
         self._compiled = compile_task(self.task, self.blockers, self._moves)

@@ -118,3 +118,23 @@ def test_an_object_no_grasp_fits_makes_the_problem_unsolvable_at_once():
     assert solution.status == "unsolvable", solution.reason
     assert "no grasp of case fits" in solution.reason
     assert len(solution.skeletons) == 1
+
+
+def test_an_object_larger_than_its_goal_region_makes_the_problem_unsolvable_at_once(tmp_path):
+    """arm-pick-place p03 with its goal region 3 cm wide: the footprint proof holds for
+    every place of a there, so the search drops them and ends `unsolvable` after one
+    skeleton (before: `limit` at the skeleton limit, 20 skeletons failing alike)."""
+    for name in ("domain.pddl", "modes.toml"):
+        (tmp_path / name).write_text((ROOT / "domains" / "arm-pick-place" / name).read_text())
+    folder = ROOT / "problems" / "arm-pick-place"
+    (tmp_path / "p03.pddl").write_text((folder / "p03.pddl").read_text())
+    scene = (folder / "p03.scene.toml").read_text()
+    assert scene.count("size = [0.15, 0.15]") == 1
+    (tmp_path / "p03.scene.toml").write_text(scene.replace("size = [0.15, 0.15]",
+                                                           "size = [0.03, 0.15]"))
+    solution = solve_paths(InputPaths(str(tmp_path / "domain.pddl"), str(tmp_path / "p03.pddl")),
+                           SolveOptions(BnBOptions(time_limit=60)))
+    assert solution.status == "unsolvable", solution.reason
+    assert "does not fit region goal (3.0 x 15.0 cm)" in solution.reason
+    assert "proved impossible in any skeleton" in solution.reason
+    assert len(solution.skeletons) == 1

@@ -13,10 +13,10 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
-from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix
+from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix, region_misfit
 from tampcli.optimize.collide import held_of
 from tampcli.optimize.kinds.base import ModeKind
-from tampcli.optimize.skeleton import LoweringError, Step
+from tampcli.optimize.skeleton import ImpossibleAction, LoweringError, Step
 from tampcli.optimize.stability import unstable
 
 
@@ -35,6 +35,9 @@ class Place(ModeKind):
                                 + (f" (holding {lo.held})" if lo.held else ""))
         if target in lo.regions:
             body = lo.regions[target].on
+            why = region_misfit(obj, lo.infos[obj], lo.regions[target])
+            if why:
+                raise ImpossibleAction(f"{label}: {why}", op.action, obj, ("on", target))
         elif target in lo.infos and target != obj:
             body = target
             if lo.holds_up(obj, target):
