@@ -236,3 +236,41 @@ def test_box_side_grip_touches_the_box_at_every_angle(a):
     c, G, _, _ = grip.parts(a + grip.yaw)
     robot_in_box = G.T @ -c
     assert _rect_distance(robot_in_box[:2], 0.05, 0.03) == pytest.approx(grip.rim, abs=1e-9)
+
+
+def test_keyframe_rows_moves_with_and_without_what_is_carried():
+    """arm-kitchen's moves: the tool over its target, above the face the target lies on
+    (the hand's fingertips, or what it carries), and what it carries within 3 degrees
+    of upright."""
+    from tampcli.geometry.scene import load_scene
+    from tampcli.geometry.world import World
+    from tampcli.optimize.modes import load_modes
+    from tampcli.pddl import parser
+
+    from .helpers import ROOT
+
+    d = ROOT / "domains" / "arm-kitchen"
+    domain = parser.parse_domain_file(d / "domain.pddl")
+    problem_ast = parser.parse_problem_file(ROOT / "problems" / "arm-kitchen" / "p01.pddl")
+    modes = load_modes(d / "modes.toml", domain)
+    scene = load_scene(ROOT / "problems" / "arm-kitchen" / "p01.scene.toml", domain,
+                       problem_ast, modes=modes, geometric=False)
+    with World(scene) as world:
+        problem = lower(ops("(move home counter)", "(pick cabbage counter)",
+                            "(move counter sink)", "(place cabbage sink)"),
+                        scene, modes, world, domain=domain)
+        assert problem.error is None
+        placements, _ = final_guess(problem)
+        kvals, choices = keyframe_guess(problem, placements, world.start,
+                                        np.random.default_rng(0))
+        klayout = keyframe_layout(problem)
+        x = klayout.pack(kvals.blocks()) + np.random.default_rng(5).normal(0, 0.02, klayout.size)
+        kin = Kinematics(world)
+        rows = keyframe_rows(problem, klayout.unpack(x), choices, kin, problem.checker,
+                             world.start, collisions=False)
+        labels = [label.what for label in rows.ineq.labels]
+        assert any("hand below the top of what counter lies on" in w for w in labels)
+        assert any("hand below the top of what sink lies on" in w for w in labels)
+        assert any(w == "cabbage tilted" for w in labels)
+        _check(lambda v: keyframe_rows(problem, v, choices, kin, problem.checker, world.start,
+                                       collisions=False), klayout, x)

@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from tampcli.optimize import constraints as C
-from tampcli.optimize.expr import PoseX
+from tampcli.optimize.expr import Label, PoseX
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.layout import keyframe_block
 from tampcli.optimize.skeleton import LoweringError, Step
@@ -107,6 +107,8 @@ class Move(ModeKind):
             lo, hi = target_rect(walk.problem, step.target)
             C.point_in_rect(walk.rows.ineq, step.name, tool, lo, hi,
                             f"tool outside {step.target}")
+            if not walk.planar:
+                self._above(walk, step, k, tool)
         if walk.held is not None and not walk.planar:
             # What is carried stays nearly upright where a move ends: a pinch grip
             # tilted about its fingers lets the object swing back under gravity
@@ -115,6 +117,24 @@ class Move(ModeKind):
             H = walk.gripped(k, grip_step)[4]
             C.tilt_within(walk.rows.ineq, step.name, H, name, HELD_TILT)
         walk.collide(k, step, walk.held_now(), frame, set())
+
+    def _above(self, walk, step, k, tool) -> None:
+        """Over its target, the hand (or what it carries) is above the face the target
+        lies on: implied by the collision rows, and the one that keeps the `reach`
+        relaxation (no collision rows) from sinking the hand into the table, a start
+        the keyframe NLP took 30 SLSQP iterations to climb out of (arm-kitchen)."""
+        problem = walk.problem
+        floor = _top_under(problem, step.target) + problem.options.tight_margin
+        if walk.held is not None:
+            name, grip_step = walk.held
+            low = walk.gripped(k, grip_step)[4]
+            depth = problem.bodies[name].half[2]
+        else:
+            low, depth = tool, problem.world.fingertip_depth or 0.0
+        g = np.zeros((1, 12))
+        g[0, 2] = 1.0
+        walk.rows.ineq.add(np.array([low.pos[2] - depth - floor]), low.through(g),
+                           Label(step.name, f"hand below the top of what {step.target} lies on"))
 
     def switch(self, walk, step):
         pass
