@@ -142,11 +142,12 @@ def reach(run: Run, warm) -> TrajectoryResult:
 
 
 def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
-                    placements: dict | None = None, collisions: bool = True
-                    ) -> TrajectoryResult:
+                    placements: dict | None = None, collisions: bool = True,
+                    retries: bool = True) -> TrajectoryResult:
     """`grips`: step -> a grip parameter the NLP keeps (the NLP's choice otherwise);
     `placements`: the final stage's values to use (solved from scratch otherwise);
-    `collisions`: False for the relaxation (`reach`)."""
+    `collisions`: False for the relaxation (`reach`); `retries`: False for one NLP
+    from the guess (no jittered guess, no `tight_margin`)."""
     problem = run.problem
     why = too_small(problem) or beyond_reach(problem)
     if why:
@@ -179,7 +180,7 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
         else:
             bounds.append((-GRIP_BOUND, GRIP_BOUND))
     best = None
-    for attempt in range(2):
+    for attempt in range(2 if retries else 1):
         guess, choices = keyframe_guess(problem, placements, run.start, run.rng,
                                         jitter=RETRY_JITTER if attempt else 0.0)
         if attempt == 0 and _shares_prefix(problem, warm):
@@ -198,7 +199,7 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
         if out.status == "solved" or time.perf_counter() > run.deadline:
             break
     out, choices = best
-    if out.status != "solved" and collisions and time.perf_counter() < run.deadline:
+    if out.status != "solved" and collisions and retries and time.perf_counter() < run.deadline:
         out = _tight_keyframes(run, layout, bounds, out, choices)
     kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
     T = problem.options.waypoints
