@@ -204,3 +204,50 @@ def test_a_robot_starting_within_the_margin_of_a_body_is_warned_of(cli, tmp_path
            "solve's 10 mm margin" in run.err
     clear = cli("check", folder / "domain.pddl", folder / "p07.pddl")
     assert "the robot starts" not in clear.err
+
+
+def _blind7(tmp_path, stem, edit=None):
+    """(domain, problem) of a copy of blind7's problem `stem` in a folder of its own."""
+    folder = ROOT / "problems" / "blind7" / stem
+    tmp_path = tmp_path / stem
+    tmp_path.mkdir()
+    for f in folder.iterdir():
+        shutil.copy(f, tmp_path / f.name)
+    if edit:
+        edit(tmp_path)
+    return tmp_path / "domain.pddl", tmp_path / f"{stem}.pddl"
+
+
+def test_a_box_sunk_into_its_support_is_told_the_z_that_rests_it(cli, tmp_path):
+    """blind7 p04 (written blind, an error case): a gauge's centre at the table top."""
+    run = cli("check", *_blind7(tmp_path, "p04"))
+    assert run.code == 2
+    assert "p04.scene.toml:22: objects.pose: 'gauge' overlaps 'table' by 35.0 mm in the " \
+           "start state (expected it resting on 'table': pose z = 0.035)" in run.err
+
+
+def test_a_movable_mesh_must_start_unturned_and_centred_on_its_origin(cli, tmp_path):
+    """blind7 p05: a prism mesh turned 30 deg was refused as 9.2 cm wide (its turned
+    bounding box), a false proof; a mesh whose origin is at its base was moved by the
+    wrong point."""
+    turned = cli("check", *_blind7(tmp_path, "p05"))
+    assert turned.code == 2
+    assert "objects.pose: a movable mesh must start unturned" in turned.err
+    assert "'big' is turned 30.0 deg" in turned.err
+
+    def base_origin(folder):
+        obj = folder / "hexnut.obj"
+        lines = [f"v {ln.split()[1]} {ln.split()[2]} {float(ln.split()[3]) + 0.03:.6f}"
+                 if ln.startswith("v ") else ln for ln in obj.read_text().splitlines()]
+        obj.write_text("\n".join(lines) + "\n")
+        scene = folder / "p01.scene.toml"
+        text = scene.read_text()
+        assert text.count("pose = [0.44, -0.22, 0.03]") == 1
+        scene.write_text(text.replace("pose = [0.44, -0.22, 0.03]", "pose = [0.44, -0.22, 0.0]"))
+
+    (tmp_path / "based").mkdir()
+    based = cli("check", *_blind7(tmp_path / "based", "p01", base_origin))
+    assert based.code == 2
+    assert "a movable mesh's origin must be the centre of its bounding box" in based.err
+    assert "(0.0000, 0.0000, 0.0300) m from it" in based.err
+    assert cli("check", *_blind7(tmp_path, "p01")).code == 0
