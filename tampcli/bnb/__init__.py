@@ -125,6 +125,7 @@ class _Trial:
     nlp_cost: float | None = None
     path_result: Any = None
     failed: Any = None  # the result of the stage that failed
+    failed_stage: str | None = None  # and that stage
     kkt: KktStages = KktStages()  # of the stages solved so far
 
 
@@ -318,7 +319,8 @@ class _Search(StageSteps):
                                          trial.failed if named else None))
         elif trial.outcome == "pruned":
             self.stats["skeletons_pruned"] += 1
-        self.judged[trial.names] = Judged(trial.rank, trial.outcome, trial.path_result)
+        self.judged[trial.names] = Judged(trial.rank, trial.outcome, trial.path_result,
+                                          trial.failed_stage)
         heuristic = trial.heuristic_bound is not None
         self.records.append(SkeletonRecord(
             trial.rank, trial.names, trial.symbolic, trial.outcome,

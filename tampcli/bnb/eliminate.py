@@ -11,10 +11,12 @@ holding a block it had no reason to touch). Passes repeat until nothing drops.
 The shorter skeleton has a lower symbolic cost than the answer, so the search
 has often drawn it already (the blocker moved away, less the move, is the
 skeleton that failed first). It is not optimized again when the search found it
-infeasible (no record: the search's says why), nor when it solved it (its path
-is taken, a record saying so); one pruned by a bound is evaluated, its record
-naming the search's: a plan with an action fewer is taken whatever its
-objective. `stats["elimination_skeletons"]` counts the records added here, after
+infeasible before its path stage (no record: the search's says why; those NLPs
+would fail again), nor when it solved it (its path is taken, a record saying
+so); one pruned by a bound, or that failed at its path stage (sampled starts:
+blind7 p03's carry through a maze failed in the 2-action skeleton and passed in
+a 4-action one), is evaluated, its record naming the search's: a plan with an
+action fewer is taken whatever its objective. `stats["elimination_skeletons"]` counts the records added here, after
 the search's `skeletons_generated`; `stats["elimination_skipped"]` the shorter
 skeletons known infeasible.
 """
@@ -52,7 +54,7 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
             shorter = tuple(shorter)
             names = tuple(op.name for op in shorter)
             known = result.judged.get(names)
-            if known is not None and known.outcome == "infeasible":
+            if known is not None and known.outcome == "infeasible" and known.stage != "path":
                 skipped += 1
                 continue
             symbolic = float(sum(op.cost for op in shorter))

@@ -77,7 +77,7 @@ class StageSteps:
         return True
 
     def _stage_failed(self, trial, stage: str, result) -> None:
-        trial.outcome, trial.failed = "infeasible", result
+        trial.outcome, trial.failed, trial.failed_stage = "infeasible", result, stage
         self.learn(result)
         trial.reason = f"{stage} stage {result.status}: {result.worst_constraint or 'no detail'}"
         if not getattr(result, "proved", False) or result.status == "limit":

@@ -106,6 +106,7 @@ class Judged:
     rank: int
     outcome: str
     path: Any = None
+    stage: str | None = None  # the stage an infeasible one failed at, when one did
 
 
 @dataclass

@@ -82,3 +82,22 @@ def test_a_shorter_skeleton_pruned_by_a_bound_is_evaluated_and_says_why():
     assert "#2 again, pruned there" in result.skeletons[-1].reason
     assert len(result.skeletons) == result.stats["skeletons_generated"] + \
         result.stats["elimination_skeletons"]
+
+
+def test_a_shorter_skeleton_that_failed_at_its_path_stage_is_tried_again():
+    """blind7 p03: a carry through a maze failed in the 2-action skeleton (its path
+    stage starts from sampled paths) and passed in a 4-action one; the answer kept the
+    useless drop and fetch. A keyframe failure would fail again; a path failure may not."""
+    calls = []
+    table = {(SHORT, "path"): R("infeasible", worst_constraint="no path")}
+    result = branch_and_bound(plans(SHORT, LONG), table_evaluator(table, calls),
+                              BnBOptions(prefix_pruning=False))
+    assert result.judged[SHORT].outcome == "infeasible"
+    assert result.judged[SHORT].stage == "path"
+    assert [op.name for op in result.best_plan] == list(LONG)
+    calls.clear()
+    result = eliminate_useless(result, table_evaluator({}, calls), drop_b, 0.1, float("inf"))
+    assert (SHORT, "path") in calls
+    assert [op.name for op in result.best_plan] == list(SHORT)
+    assert result.stats["elimination_skipped"] == 0
+    assert result.stats["actions_eliminated"] == 2
