@@ -169,7 +169,7 @@ class _Search(StageSteps):
     def run(self) -> BnBResult:
         iterator = iter(self.skeletons)
         while True:
-            if self.elapsed() >= self.options.time_limit:
+            if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
                 stop = "time"
                 break
             if self.rank >= self.options.max_skeletons:

@@ -165,7 +165,7 @@ class _ParallelSearch(_Search):
         out: deque[_Out] = deque()
         stop = None
         while True:
-            if self.elapsed() >= self.options.time_limit:
+            if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
                 stop = "time"
                 break
             if stop is None and len(out) < 2 * self.options.jobs:
@@ -173,7 +173,8 @@ class _ParallelSearch(_Search):
                 continue
             if not out or stop == "first":
                 break
-            wait([out[0].future], timeout=max(self.options.time_limit - self.elapsed(), 0.0),
+            wait([out[0].future], timeout=max(self.options.search_limit(self.incumbent is not None)
+                                         - self.elapsed(), 0.0),
                  return_when=FIRST_COMPLETED)
             if out[0].future.done():
                 self._take(out.popleft())

@@ -29,6 +29,8 @@ class BnBOptions:
         looking for a better one.
     jobs: skeletons whose NLPs are solved at once, each in a worker process with a
         World of its own (bnb/parallel.py); 1 solves them here, one after another.
+    reserve: seconds of `time_limit` left to a pass after the search (action
+        elimination): with an answer, the search stops at `time_limit - reserve`.
     """
 
     max_skeletons: int = 20
@@ -38,12 +40,18 @@ class BnBOptions:
     prefix_pruning: bool = True
     first: bool = False
     jobs: int = 1
+    reserve: float = 0.0
+
+    def search_limit(self, answered: bool) -> float:
+        """When the search stops: the reserve is only for an answer's elimination."""
+        return self.time_limit - self.reserve if answered else self.time_limit
 
     def __post_init__(self):
         require_int(self.max_skeletons, "max_skeletons", 1)
         require_int(self.jobs, "jobs", 1)
         require_number(self.time_limit, "time_limit", positive=True, unit="s", finite=False)
         require_number(self.symbolic_weight, "symbolic_weight")
+        require_number(self.reserve, "reserve")
 
 
 class StageResult(Protocol):

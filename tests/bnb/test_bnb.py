@@ -221,6 +221,27 @@ def test_time_limit_with_fake_clock():
     assert res.status == "limit" and res.stats["stop"] == "time limit"
 
 
+def test_the_reserve_is_kept_only_once_there_is_an_answer():
+    """With an answer the search stops `reserve` seconds early (action elimination's
+    time); without one it goes on to the limit."""
+    src = [((f"a{i}",), i) for i in range(20)]
+    unsolved = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(20)})
+    ticks = iter(range(1000))
+    res = branch_and_bound(Source(src), unsolved, BnBOptions(time_limit=10, reserve=4,
+                                                              anytime=True, max_skeletons=100),
+                           clock=lambda: next(ticks))
+    seen_without = len(res.skeletons)
+    solved = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(1, 20)})
+    ticks = iter(range(1000))
+    res = branch_and_bound(Source(src), solved, BnBOptions(time_limit=10, reserve=4,
+                                                            anytime=True, max_skeletons=100),
+                           clock=lambda: next(ticks))
+    assert res.status == "solved" and res.stats["stop"] == "time limit"
+    assert len(res.skeletons) < seen_without
+    assert BnBOptions(time_limit=10, reserve=4).search_limit(True) == 6
+    assert BnBOptions(time_limit=10, reserve=4).search_limit(False) == 10
+
+
 def test_options_are_validated():
     with pytest.raises(ValueError):
         BnBOptions(max_skeletons=0)
