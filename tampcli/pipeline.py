@@ -107,7 +107,6 @@ class Timers:
         self.seconds[name] = self.seconds.get(name, 0.0) + seconds
 
 
-ELIMINATION_SHARE = 0.1  # of solve's time limit, kept for action elimination
 
 class _TimedSkeletons:
     """Wraps the skeleton source: counts the time spent producing skeletons
@@ -118,15 +117,7 @@ class _TimedSkeletons:
 
     @property
     def scope(self) -> str:
-        """Which skeletons the LearningSource yields, in words."""
-        words = ("loopless ones, then, none being feasible, those passing a symbolic state "
-                 "twice at most (a regrasp)")
-        gone = sorted(self.topk.impossible)
-        if gone:
-            words += (f"; less every skeleton with one of {len(gone)} action(s) proved "
-                      f"impossible in any skeleton ({', '.join(gone[:3])}"
-                      f"{' ...' if len(gone) > 3 else ''})")
-        return words
+        return self.topk.scope
 
     def forbid_prefix(self, names):
         self.topk.forbid_prefix(names)
@@ -252,8 +243,8 @@ class _Geometry:
 def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
-        from tampcli.bnb.eliminate import eliminate_useless
-        from tampcli.optimize.blockers import blocker_of
+        from tampcli.bnb.eliminate import ELIMINATION_SHARE, eliminate_useless
+        from tampcli.bnb.lessons import teacher
         from tampcli.search.eliminate import without_step
         from tampcli.search.learned import LearningSource
         from tampcli.search.topk import TopK
@@ -283,27 +274,11 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
 
     source = LearningSource(inputs.task, make_topk, moves, make_regrasps=make_regrasps)
 
-    def learn(result) -> None:
-        blocker = blocker_of(getattr(result, "worst_constraint", None), movable)
-        if blocker is not None:
-            source.learn(blocker)
-        impossible = getattr(result, "impossible", None)
-        if impossible is not None:
-            action, obj, role = impossible
-
-            def matches(op) -> bool:
-                if op.action != action:
-                    return False
-                bound = modes.get_mode(action).bind(op.args)
-                return bound["object"] == obj and (role is None or bound[role[0]] == role[1])
-
-            source.forbid_operators(frozenset(
-                op.name for op in inputs.task.operators if matches(op)))
+    learn = teacher(source, inputs.task, modes, movable)
 
     def heard(event) -> None:
-        # With an answer, the NLPs too stop where the search does: the reserve is for
-        # its action elimination (blind7 p03: a skeleton drawn before the search's
-        # limit ran its path NLPs to the end of the time).
+        # With an answer the NLPs stop where the search does: the reserve is action
+        # elimination's (blind7 p03: a skeleton's path NLPs ran to the end of the time).
         if event.kind == "incumbent":
             evaluate.deadline = min(evaluate.deadline, deadline - reserve)
         if on_event is not None:

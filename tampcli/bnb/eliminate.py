@@ -33,6 +33,7 @@ from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
 
 STAGES = ("final", "keyframes", "path")
+ELIMINATION_SHARE = 0.1  # of solve's time limit, kept for action elimination once answered
 
 
 def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], Any],

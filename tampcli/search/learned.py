@@ -185,6 +185,20 @@ class LearningSource:
     # ------------------------------------------------------------ what it gives
 
     @property
+    def scope(self) -> str:
+        """Which skeletons this source yields, in words (for a search's last message)."""
+        words = "loopless ones"
+        if self._make_regrasps is not None or self.revisits:
+            words += (", then, none being feasible, those passing a symbolic state twice at "
+                      "most (a regrasp)")
+        gone = sorted(self.impossible)
+        if gone:
+            words += (f"; less every skeleton with one of {len(gone)} action(s) proved "
+                      f"impossible in any skeleton ({', '.join(gone[:3])}"
+                      f"{' ...' if len(gone) > 3 else ''})")
+        return words
+
+    @property
     def status(self) -> str:
         return getattr(self._plain, "status", "running")
 
