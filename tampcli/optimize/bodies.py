@@ -31,6 +31,9 @@ class BodyInfo:
     pose: tuple[float, float, float, float]  # start (x, y, z, yaw)
     upright: bool  # the start pose has its z axis vertical
     mass: float = 1.0  # kg: the scene's `mass`, else DENSITY x volume
+    # The shape is the body's (box, cylinder, sphere), not a bounding box of a mesh or
+    # URDF: only then does a width or footprint test prove anything.
+    exact: bool = True
 
     @property
     def disk(self) -> bool:
@@ -68,7 +71,7 @@ def body_info(body, world=None) -> BodyInfo:
         centre = 0.5 * (hi + lo)
         return BodyInfo(body.name, "box", half, body.fixed,
                         (float(centre[0]), float(centre[1]), float(centre[2]), 0.0), True,
-                        _mass(body, "box", half))
+                        _mass(body, "box", half), exact=False)
     if not upright:
         # A tilted body: treat it by its world AABB (only obstacles are tilted sensibly).
         corners = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)])

@@ -37,7 +37,8 @@ def too_small(problem) -> str | None:
     """An object whose footprint fits its target region in no orientation (proved)."""
     regions = {r.name: r for r in problem.scene.regions}
     for step in problem.steps:
-        if step.kind.places and step.target in regions:
+        # A mesh's bounding box proves nothing: its NLPs find out (unproved).
+        if step.kind.places and step.target in regions and problem.bodies[step.obj].exact:
             why = region_misfit(step.obj, problem.bodies[step.obj], regions[step.target])
             if why:
                 return f"{step.name}: {why}"

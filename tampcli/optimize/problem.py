@@ -33,7 +33,8 @@ class TrajectoryProblem:
     world: object = field(repr=False)
     options: OptimizeOptions = OptimizeOptions()
     planar: bool = False
-    error: str | None = None  # the skeleton cannot be lowered (infeasible, proved)
+    error: str | None = None  # the skeleton cannot be lowered (infeasible)
+    error_proved: bool = True  # ... and that is a proof (not a mesh's bounding box's)
     # (action schema, object, role or None) of an ImpossibleAction: the error holds for
     # every skeleton
     impossible: tuple | None = None
@@ -84,7 +85,7 @@ def lower(skeleton, scene, modes, world, options: OptimizeOptions | None = None,
         impossible = (err.action, err.obj, err.role) if isinstance(err, ImpossibleAction) \
             else None
         return TrajectoryProblem(steps=(), motions=(), error=str(err), impossible=impossible,
-                                 **base)
+                                 error_proved=err.proved, **base)
     return TrajectoryProblem(steps=tuple(lo.steps), motions=tuple(lo.motions),
                              grip_params=tuple(lo.grip_params), **base)
 

@@ -54,7 +54,12 @@ class MotionPhase:
 
 
 class LoweringError(Exception):
-    """The skeleton cannot be lowered: infeasible, proved (never raised out of `lower`)."""
+    """The skeleton cannot be lowered: infeasible, proved unless `proved` is False (a
+    test on a mesh's bounding box); never raised out of `lower`."""
+
+    def __init__(self, message: str, proved: bool = True):
+        super().__init__(message)
+        self.proved = proved
 
 
 class ImpossibleAction(LoweringError):

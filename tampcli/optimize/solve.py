@@ -40,8 +40,9 @@ def solve(problem: TrajectoryProblem, stage: str, warm: TrajectoryResult | None 
     run = Run(problem, stage)
     run.cutoff = cutoff
     if problem.error is not None:
-        return run.result("infeasible", worst_constraint=problem.error, proved=True,
-                          bound_kind="proved", violation=math.inf,
+        proved = problem.error_proved
+        return run.result("infeasible", worst_constraint=problem.error, proved=proved,
+                          bound_kind="proved" if proved else "heuristic", violation=math.inf,
                           impossible=problem.impossible)
     try:
         if stage == "final":

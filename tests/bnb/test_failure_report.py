@@ -138,3 +138,22 @@ def test_an_object_larger_than_its_goal_region_makes_the_problem_unsolvable_at_o
     assert "does not fit region goal (3.0 x 15.0 cm)" in solution.reason
     assert "proved impossible in any skeleton" in solution.reason
     assert len(solution.skeletons) == 1
+
+
+def test_a_mesh_too_wide_as_its_bounding_box_proves_nothing(tmp_path):
+    """blind7 p01's hexagonal prism scaled 1.5 times: 8.7 cm across its corners, 7.5 cm
+    across its flats, more than the Panda takes either way. Its bounding box is all the
+    planner knows of it, and a test on a bounding box is no proof: the search goes on,
+    `limit`, not `unsolvable`, and no action is taken out of the task."""
+    folder = ROOT / "problems" / "blind7" / "p01"
+    for f in folder.iterdir():
+        (tmp_path / f.name).write_bytes(f.read_bytes())
+    scene = (tmp_path / "p01.scene.toml").read_text()
+    assert scene.count('mesh = "hexnut.obj"') == 1
+    (tmp_path / "p01.scene.toml").write_text(scene.replace(
+        'mesh = "hexnut.obj"', 'mesh = "hexnut.obj"\nscale = [1.5, 1.5, 1.0]'))
+    solution = solve_paths(InputPaths(str(tmp_path / "domain.pddl"), str(tmp_path / "p01.pddl")),
+                           SolveOptions(BnBOptions(time_limit=20, max_skeletons=3)))
+    assert solution.status == "limit", solution.reason
+    assert "(as its bounding box)" in solution.reason
+    assert "proved impossible" not in solution.reason

@@ -82,8 +82,10 @@ class Grasp(ModeKind):
             families, why = F.possible(getattr(mode, "grasps", None), lo.infos[obj],
                                        lo.gripper_opening)
             if not families:
-                raise ImpossibleAction(f"{label}: no grasp of {obj} fits ({'; '.join(why)})",
-                                       op.action, obj)
+                message = f"{label}: no grasp of {obj} fits ({'; '.join(why)})"
+                if not lo.infos[obj].exact:  # its bounding box's width: no proof
+                    raise LoweringError(message + " (as its bounding box)", proved=False)
+                raise ImpossibleAction(message, op.action, obj)
             kind = Grasp(families)
         k = lo.motion(index, "free", None, None, {obj})
         lo.last_contact = frozenset({lo.support.get(obj)} - {None})

@@ -36,6 +36,8 @@ class Place(ModeKind):
         if target in lo.regions:
             body = lo.regions[target].on
             why = region_misfit(obj, lo.infos[obj], lo.regions[target])
+            if why and not lo.infos[obj].exact:
+                raise LoweringError(f"{label}: {why} (as its bounding box)", proved=False)
             if why:
                 raise ImpossibleAction(f"{label}: {why}", op.action, obj, ("on", target))
         elif target in lo.infos and target != obj:
