@@ -107,44 +107,6 @@ class Timers:
         self.seconds[name] = self.seconds.get(name, 0.0) + seconds
 
 
-
-class _TimedSkeletons:
-    """Wraps the skeleton source: counts the time spent producing skeletons
-    (search.learned.LearningSource: its bound and learning pass through)."""
-
-    def __init__(self, topk, timers: Timers):
-        self.topk, self.timers = topk, timers
-
-    @property
-    def scope(self) -> str:
-        return self.topk.scope
-
-    def forbid_prefix(self, names):
-        self.topk.forbid_prefix(names)
-
-    def solved(self, names):
-        self.topk.solved(names)
-
-    def lower_bound(self) -> float:
-        start = time.perf_counter()
-        try:
-            return self.topk.lower_bound()
-        finally:
-            self.timers.add("search", time.perf_counter() - start)
-
-    def __iter__(self):
-        iterator = iter(self.topk)
-        while True:
-            start = time.perf_counter()
-            try:
-                plan = next(iterator)
-            except StopIteration:
-                return
-            finally:
-                self.timers.add("search", time.perf_counter() - start)
-            yield plan
-
-
 def solve(paths: InputPaths, options: SolveOptions = SolveOptions(),
           on_event: Callable[[Event], None] | None = None) -> Solution:
     """Solve and close the World: the Solution alone."""
@@ -247,6 +209,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
         from tampcli.bnb.lessons import teacher
         from tampcli.search.eliminate import without_step
         from tampcli.search.learned import LearningSource
+        from tampcli.search.timed import TimedSource
         from tampcli.search.topk import TopK
 
         deadline = time.perf_counter() + options.bnb.time_limit
@@ -288,7 +251,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
     search = dict(is_geometric=lambda op: modes.get_mode(op.action).geometric,
                   on_event=heard, learn=learn, relax=evaluate.relaxed,
                   diagnose=evaluate.violated)
-    skeletons = _TimedSkeletons(source, timers)
+    skeletons = TimedSource(source, timers)
     if options.bnb.jobs == 1:
         result = branch_and_bound(skeletons, evaluate, searching, **search)
     else:

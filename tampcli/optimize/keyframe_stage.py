@@ -10,7 +10,6 @@ import time
 
 import numpy as np
 
-from tampcli.optimize.bodies import region_misfit
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
 from tampcli.optimize.init import keyframe_guess
@@ -31,18 +30,6 @@ GRIP_BOUND = 4 * math.pi
 RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
 FACE_SAME = 0.05  # rad: a contact angle this close to a face's middle is at that face
 FIXED_GRIP = 1e-6  # rad: the bounds' half width around a grip parameter kept fixed
-
-
-def too_small(problem) -> str | None:
-    """An object whose footprint fits its target region in no orientation (proved)."""
-    regions = {r.name: r for r in problem.scene.regions}
-    for step in problem.steps:
-        # A mesh's bounding box proves nothing: its NLPs find out (unproved).
-        if step.kind.places and step.target in regions and problem.bodies[step.obj].exact:
-            why = region_misfit(step.obj, problem.bodies[step.obj], regions[step.target])
-            if why:
-                return f"{step.name}: {why}"
-    return None
 
 
 def beyond_reach(problem) -> str | None:
@@ -100,7 +87,7 @@ def solve_placements(run: Run, origins: dict | None = None, like: dict | None = 
 
 
 def final(run: Run) -> TrajectoryResult:
-    why = too_small(run.problem) or beyond_reach(run.problem)
+    why = beyond_reach(run.problem)
     if why:
         return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
     out, placements = solve_placements(run)
@@ -150,7 +137,7 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
     `collisions`: False for the relaxation (`reach`); `retries`: False for one NLP
     from the guess (no jittered guess, no `tight_margin`)."""
     problem = run.problem
-    why = too_small(problem) or beyond_reach(problem)
+    why = beyond_reach(problem)
     if why:
         return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
     have = warm is not None and warm.placements and all(

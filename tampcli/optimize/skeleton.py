@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from tampcli.optimize.bodies import REST_TOLERANCE
+from tampcli.optimize.bodies import REST_TOLERANCE, region_misfit
 
 if TYPE_CHECKING:
     from tampcli.optimize.kinds.base import ModeKind
@@ -111,6 +111,16 @@ class Lowering:
         """(object, on, to) of the action: its mode's roles bound to its arguments."""
         return tuple(self._resolve(getattr(mode, role, None), op, mode)
                      for role in ("object", "on", "to"))
+
+    def fits(self, label: str, op, obj: str, region: str, role: str) -> None:
+        """Raise where obj's footprint fits `region` in no orientation: ImpossibleAction
+        (every such action, in any skeleton) for a box, cylinder or sphere; unproved
+        for a mesh's or URDF's bounding box."""
+        why = region_misfit(obj, self.infos[obj], self.regions[region])
+        if why and not self.infos[obj].exact:
+            raise LoweringError(f"{label}: {why} (as its bounding box)", proved=False)
+        if why:
+            raise ImpossibleAction(f"{label}: {why}", op.action, obj, (role, region))
 
     def movable(self, label: str, obj: str | None) -> None:
         if obj is None or obj not in self.infos:

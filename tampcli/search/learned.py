@@ -133,13 +133,27 @@ class LearningSource:
             return False
         self.blockers = self.blockers | {blocker}
         self.stats["learned"] += 1
+        self._recompile()
+        self._restart(plain=False)
+        return True
+
+    def _recompile(self) -> None:
+        """The task with what was learned, anew (the task or the findings changed)."""
         self._compiled = compile_task(self.task, self.blockers, self._moves)
         self._compiled_ops = {op.name: op for op in self._compiled.operators}
         self._fits.clear()
-        self._learned = self._make(self._compiled)
+
+    def _restart(self, plain: bool) -> None:
+        """The learned enumeration (and the plain one when `plain`) starts again, the
+        forbidden prefixes still forbidden."""
+        if plain:
+            self._plain, self._plain_done = self._make(self.task), False
+        self._learned = self._make(self._compiled) if self.blockers else None
         for names in self._forbidden:
-            self._learned.forbid_prefix(names)
-        return True
+            if plain:
+                self._plain.forbid_prefix(names)
+            if self._learned is not None:
+                self._learned.forbid_prefix(names)
 
     def solved(self, names: tuple[str, ...]) -> None:
         """A skeleton found feasible: its supersequences are not worth an NLP."""
@@ -155,20 +169,13 @@ class LearningSource:
         self.impossible |= names
         self.task = dataclasses.replace(self.task, operators=tuple(
             op for op in self.task.operators if op.name not in names))
-        self._compiled = compile_task(self.task, self.blockers, self._moves)
-        self._compiled_ops = {op.name: op for op in self._compiled.operators}
-        self._fits.clear()
+        self._recompile()
+        self._restart(plain=True)
 
         def uses(plan) -> bool:
             return any(name in names for name in plan.names)
 
-        self._plain, self._plain_done = self._make(self.task), False
         self._plain_queue = deque(p for p in self._plain_queue if not uses(p))
-        self._learned = self._make(self._compiled) if self.blockers else None
-        for prefix in self._forbidden:
-            self._plain.forbid_prefix(prefix)
-            if self._learned is not None:
-                self._learned.forbid_prefix(prefix)
         self._deferred = [d for d in self._deferred if not uses(d[2])]
         heapq.heapify(self._deferred)
 
@@ -228,12 +235,7 @@ class LearningSource:
             return False
         self._make, self._make_regrasps = self._make_regrasps, None
         self.revisits = 1
-        self._plain, self._plain_done = self._make(self.task), False
-        self._learned = self._make(self._compiled) if self.blockers else None
-        for names in self._forbidden:
-            self._plain.forbid_prefix(names)
-            if self._learned is not None:
-                self._learned.forbid_prefix(names)
+        self._restart(plain=True)
         return True
 
     def __iter__(self) -> Iterator:

@@ -170,22 +170,29 @@ def test_collision_rows_at_active_contacts(wall):
     _check(lambda v: evaluate(layout.pack(v)), layout, x, h=1e-5, tol=2e-3)
 
 
-def test_keyframe_rows_stacking_on_a_moved_cube():
-    """Stacking on a support the skeleton moved (footprint, centre of mass, the tower
-    pair's alignment rows), and rows that depend on two keyframes."""
+def _library(folder: str, stem: str):
+    """(domain, scene, modes) of a library problem, through the product's loaders."""
     from tampcli.geometry.scene import load_scene
-    from tampcli.geometry.world import World
     from tampcli.optimize.modes import load_modes
     from tampcli.pddl import parser
 
     from .helpers import ROOT
 
-    d = ROOT / "domains" / "arm-pick-place"
+    d = ROOT / "domains" / folder
     domain = parser.parse_domain_file(d / "domain.pddl")
-    problem_ast = parser.parse_problem_file(ROOT / "problems" / "arm-pick-place" / "p05.pddl")
+    problem = parser.parse_problem_file(ROOT / "problems" / folder / f"{stem}.pddl")
     modes = load_modes(d / "modes.toml", domain)
-    scene = load_scene(ROOT / "problems" / "arm-pick-place" / "p05.scene.toml", domain,
-                       problem_ast, modes=modes, geometric=False)
+    scene = load_scene(ROOT / "problems" / folder / f"{stem}.scene.toml", domain, problem,
+                       modes=modes, geometric=False)
+    return domain, scene, modes
+
+
+def test_keyframe_rows_stacking_on_a_moved_cube():
+    """Stacking on a support the skeleton moved (footprint, centre of mass, the tower
+    pair's alignment rows), and rows that depend on two keyframes."""
+    from tampcli.geometry.world import World
+
+    domain, scene, modes = _library("arm-pick-place", "p05")
     with World(scene) as world:
         problem = lower(ops("(pick b start)", "(stack b c)", "(pick a start)", "(stack a b)"),
                         scene, modes, world, domain=domain)
@@ -242,19 +249,9 @@ def test_keyframe_rows_moves_with_and_without_what_is_carried():
     """arm-kitchen's moves: the tool over its target, above the face the target lies on
     (the hand's fingertips, or what it carries), and what it carries within 3 degrees
     of upright."""
-    from tampcli.geometry.scene import load_scene
     from tampcli.geometry.world import World
-    from tampcli.optimize.modes import load_modes
-    from tampcli.pddl import parser
 
-    from .helpers import ROOT
-
-    d = ROOT / "domains" / "arm-kitchen"
-    domain = parser.parse_domain_file(d / "domain.pddl")
-    problem_ast = parser.parse_problem_file(ROOT / "problems" / "arm-kitchen" / "p01.pddl")
-    modes = load_modes(d / "modes.toml", domain)
-    scene = load_scene(ROOT / "problems" / "arm-kitchen" / "p01.scene.toml", domain,
-                       problem_ast, modes=modes, geometric=False)
+    domain, scene, modes = _library("arm-kitchen", "p01")
     with World(scene) as world:
         problem = lower(ops("(move home counter)", "(pick cabbage counter)",
                             "(move counter sink)", "(place cabbage sink)"),

@@ -13,10 +13,10 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.optimize import constraints as C
-from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix, region_misfit
+from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
 from tampcli.optimize.kinds.base import ModeKind
-from tampcli.optimize.skeleton import ImpossibleAction, LoweringError, Step
+from tampcli.optimize.skeleton import LoweringError, Step
 from tampcli.optimize.stability import unstable
 
 
@@ -35,11 +35,7 @@ class Place(ModeKind):
                                 + (f" (holding {lo.held})" if lo.held else ""))
         if target in lo.regions:
             body = lo.regions[target].on
-            why = region_misfit(obj, lo.infos[obj], lo.regions[target])
-            if why and not lo.infos[obj].exact:
-                raise LoweringError(f"{label}: {why} (as its bounding box)", proved=False)
-            if why:
-                raise ImpossibleAction(f"{label}: {why}", op.action, obj, ("on", target))
+            lo.fits(label, op, obj, target, "on")
         elif target in lo.infos and target != obj:
             body = target
             if lo.holds_up(obj, target):

@@ -138,6 +138,7 @@ class Push(ModeKind):
             raise LoweringError(f"{label}: cannot push while holding {lo.held}")
         if to is None or to not in lo.regions:
             raise LoweringError(f"{label}: the scene has no region {to!r}")
+        lo.fits(label, op, obj, to, "to")
         below = lo.support.get(obj)
         if below is None or below != lo.regions[to].on:
             raise LoweringError(f"{label}: {obj} rests on {below}, region {to} is on "

@@ -1,0 +1,43 @@
+"""A skeleton source whose own time is counted apart from the NLPs'."""
+
+from __future__ import annotations
+
+import time
+
+
+class TimedSource:
+    """Wraps a skeleton source (search.learned.LearningSource): the time it spends
+    producing skeletons and its bound goes to `timers.add("search", seconds)`; its
+    learning and scope pass through."""
+
+    def __init__(self, topk, timers):
+        self.topk, self.timers = topk, timers
+
+    @property
+    def scope(self) -> str:
+        return self.topk.scope
+
+    def forbid_prefix(self, names):
+        self.topk.forbid_prefix(names)
+
+    def solved(self, names):
+        self.topk.solved(names)
+
+    def lower_bound(self) -> float:
+        start = time.perf_counter()
+        try:
+            return self.topk.lower_bound()
+        finally:
+            self.timers.add("search", time.perf_counter() - start)
+
+    def __iter__(self):
+        iterator = iter(self.topk)
+        while True:
+            start = time.perf_counter()
+            try:
+                plan = next(iterator)
+            except StopIteration:
+                return
+            finally:
+                self.timers.add("search", time.perf_counter() - start)
+            yield plan
