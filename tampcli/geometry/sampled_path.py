@@ -14,6 +14,13 @@ touching what it is about to grasp or has just let go, a held object on the
 surface it is put on, a keyframe in a slot) may stay as close as it is
 there, but no closer: a path may not cut through the block just set down.
 
+The same query and `seed` give the same path: OMPL's generator of seeds is
+set before each query builds its planner and samplers (every one of their
+generators is made within the query), and the budgets count validity
+checks, not seconds, so the answer does not depend on the machine's load
+(blind7 p03: with wall-time budgets, one run found its maze path and the
+next did not). `deadline` is a safety limit only (the caller's time limit).
+
 OMPL prints its log on the terminal by default: the level is set to none
 for the query, and every OMPL object is released before returning (nanobind
 warns at exit about objects still alive).
@@ -27,7 +34,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-_FIRST_SLICE = 0.25  # s: RRT-Connect's first run before a restart
+# Validity checks of RRT-Connect's first run before a restart (about 0.25 s at the
+# 4,000 checks a second measured on blind3 p03 and blind7 p03).
+FIRST_SLICE = 1000
 # m: how much deeper than at the nearer end a pair may be near an end (numerical noise
 # on a touching contact; it may not cut through what the motion starts or ends at).
 CONTACT_DEPTH = 2e-4
@@ -35,23 +44,27 @@ CONTACT_DEPTH = 2e-4
 
 @dataclass(frozen=True)
 class SamplingOptions:
-    """`time_limit` (s) for RRT-Connect (with restarts), `simplify_time` (s)
-    at most for shortcutting;
+    """`checks`: validity checks RRT-Connect may make (over its restarts);
+    `simplify_checks`: those shortcutting may make; `seed`: OMPL's seed for
+    this query; `deadline`: a time.perf_counter() value past which the query
+    gives up whatever its budget (None: none);
     `resolution`: OMPL's validity-checking step along an edge, as a fraction
     of the joint space's extent (coarse: the NLP refines, the 10x check
     judges); `clearance` (m): the distance every pair keeps;
     `endpoint_slack`: joint-space distance (rad or m) from either end within
     which contacts are allowed."""
 
-    time_limit: float = 2.0
-    simplify_time: float = 0.5
+    checks: int = 8000
+    simplify_checks: int = 2000
+    seed: int = 1
+    deadline: float | None = None
     resolution: float = 0.01
     clearance: float = 0.0
     endpoint_slack: float = 0.05
 
     def __post_init__(self):
-        if self.time_limit <= 0 or self.simplify_time < 0:
-            raise ValueError("time limits must be positive")
+        if self.checks <= 0 or self.simplify_checks < 0:
+            raise ValueError("the check budgets are a positive and a non-negative count")
         if not 0 < self.resolution < 1:
             raise ValueError("resolution is a fraction of the space's extent, in (0, 1)")
         if self.clearance < 0 or self.endpoint_slack < 0:
@@ -62,7 +75,7 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
                  ignore: frozenset[str] = frozenset(),
                  options: SamplingOptions = SamplingOptions()) -> np.ndarray | None:
     """Waypoints (K, n) from q_start to q_goal, every one valid and the edges
-    checked at `options.resolution`; None when none is found in time."""
+    checked at `options.resolution`; None when none is found within the budget."""
     from ompl import base as ob
     from ompl import geometric as og
     from ompl import util as ou
@@ -78,8 +91,10 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
                 for c in checker.distances(q, body_poses, held, ignore, horizon)}
 
     at_start, at_goal = pairs(q_start), pairs(q_goal)
+    made = [0]  # validity checks so far
 
     def valid(q: np.ndarray) -> bool:
+        made[0] += 1
         ends = [at for end, at in ((q_start, at_start), (q_goal, at_goal))
                 if np.linalg.norm(q - end) <= options.endpoint_slack]
         for pair, d in pairs(q).items():
@@ -89,9 +104,16 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
                 return False
         return True
 
+    deadline = np.inf if options.deadline is None else options.deadline
+
+    def spent(limit: int):
+        return ob.PlannerTerminationCondition(
+            lambda: made[0] >= limit or time.perf_counter() > deadline)
+
     previous = ou.getLogLevel()
     ou.setLogLevel(ou.LOG_NONE)
     try:
+        ou.RNG.setSeed(max(1, int(options.seed) % (1 << 31)))  # OMPL refuses seed 0
         space = ob.RealVectorStateSpace(n)
         bounds = ob.RealVectorBounds(n)
         for i in range(n):
@@ -109,9 +131,9 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
         setup.setStartAndGoalStates(start, goal)
         setup.setPlanner(og.RRTConnect(info))
         path = None
-        if _solve_with_restarts(setup, options.time_limit):
-            if options.simplify_time > 0:
-                setup.simplifySolution(options.simplify_time)
+        if _solve_with_restarts(setup, made, options.checks, spent, deadline):
+            if options.simplify_checks > 0:
+                setup.simplifySolution(spent(made[0] + options.simplify_checks))
             found = setup.getSolutionPath()
             path = np.array([[found.getState(k)[i] for i in range(n)]
                              for k in range(found.getStateCount())])
@@ -126,16 +148,22 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
     return path
 
 
-def _solve_with_restarts(setup, time_limit: float) -> bool:
+def _solve_with_restarts(setup, made: list, checks: int, spent, deadline: float) -> bool:
     """RRT-Connect's time to a path through a narrow passage is heavy-tailed:
     measured on a 2-D slot of 1 cm in C-space, 1,245 to 337,332 validity
-    checks over three runs (a cheap check, resolution 0.004). Restarts with growing time slices (0.25 s,
-    doubling) cut the tail; each restart clears the trees."""
-    deadline = time.perf_counter() + time_limit
-    budget = _FIRST_SLICE
-    while (left := deadline - time.perf_counter()) > 0:
-        if setup.solve(min(budget, left)) and setup.haveExactSolutionPath():
+    checks over three runs (a cheap check, resolution 0.004). Restarts with growing
+    slices (FIRST_SLICE checks, doubling) cut the tail; each restart clears the trees.
+    `made[0]` counts the checks so far; `spent(limit)` is the termination condition
+    at `limit` checks (or the deadline). A run that stops short of its slice without
+    a path gave up (an invalid start or goal): no restart."""
+    limit = made[0] + checks
+    budget = FIRST_SLICE
+    while made[0] < limit and time.perf_counter() <= deadline:
+        until = min(made[0] + budget, limit)
+        if setup.solve(spent(until)) and setup.haveExactSolutionPath():
             return True
+        if made[0] < until and time.perf_counter() <= deadline:
+            return False
         setup.clear()
         budget *= 2
     return False

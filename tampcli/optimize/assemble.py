@@ -113,8 +113,8 @@ class PhaseWalk:
 
 
 def assemble(problem: TrajectoryProblem, start, waypoints: dict, contexts: list[MotionContext]):
-    """(trajectory (N, n), phases, object poses per phase boundary, grasps used)."""
-    T = problem.options.waypoints
+    """(trajectory (N, n), phases, object poses per phase boundary, grasps used).
+    `waypoints[k]`: motion k's interior waypoints (T_k - 1, n), its T_k segments its own."""
     traj = [np.asarray(start, dtype=float)]
     ctx_of = {c.index: c for c in contexts}
     for k in range(problem.n_keyframes):
@@ -128,8 +128,18 @@ def assemble(problem: TrajectoryProblem, start, waypoints: dict, contexts: list[
             if m.pushes:
                 w.attached = (m.attached, c.grasp)
                 w.grasps[m.attached] = c.grasp
+            T = len(waypoints[k]) + 1
             w.phases.append(Phase(step.name if m.own else None, w.idx, w.idx + T, m.attached))
             w.idx += T
             w.boundary()
         step.kind.phases(w, step)
     return w.traj, tuple(w.phases), w.poses, w.grasps
+
+
+def motion_costs(traj: np.ndarray, phases, T: int) -> tuple[float, ...]:
+    """Per motion phase, its cost: (T_k / T) * the sum of its squared joint steps, T_k
+    its segments and T the options' `waypoints` (path.phase_rows_fn's cost). An
+    action's phase spans no segment."""
+    d = np.sum(np.diff(np.asarray(traj, dtype=float), axis=0) ** 2, axis=1)
+    return tuple(float(np.sum(d[p.start:p.end])) * (p.end - p.start) / T
+                 for p in phases if p.end > p.start)

@@ -12,7 +12,7 @@ import time
 
 import numpy as np
 
-from tampcli.geometry.sampled_path import SamplingOptions, resample, sampled_path
+from tampcli.geometry.sampled_path import resample, sampled_path
 from tampcli.optimize import relocate
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
@@ -27,10 +27,11 @@ from tampcli.optimize.path import (
 LAZY_BAND = 0.01  # m: a point between waypoints this close to its limit gets its rows
 LAZY_ROUNDS = 3
 SEED_BAND = 0.03  # m: a point between waypoints this close at the start has rows from the first solve
-# Of a motion's sampling time: the first try with everything in place, and (where it
+# Of a motion's sampling budget: the first try with everything in place, and (where it
 # fails) as much again with the objects this skeleton moved left out (relocate.find);
 # the rest for everything in place again.
 FIRST_SHARE = 0.25
+MAX_SEGMENTS_RATIO = 4  # a motion's segments at most, as a multiple of `waypoints`
 
 
 def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
@@ -42,8 +43,10 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     stalls), first with the margin, then with `tight_margin`, so a passage
     narrower than twice the margin is still passed. The zero-margin check at
     10x (`verify`) judges what comes out. Returns the first solved outcome, or
-    the last failure. `warm`: interior waypoints (T-1, n) of an earlier solve of
-    this motion, tried first (with the tight margin too: it solved with one of them).
+    the last failure, its x the (T_k - 1) * n interior waypoints of the T_k segments
+    used: T, or more from a sampled path with more corners (`segments_for`). `warm`:
+    interior waypoints (T_k - 1, n) of an earlier solve of this motion, tried first
+    (with the tight margin too: it solved with one of them).
     """
     problem = run.problem
     opts = problem.options
@@ -54,8 +57,9 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     if ctx.held is not None:
         held_height = 2 * problem.bodies[ctx.held.name].half[2]
     if warm is not None:
+        warm = np.asarray(warm)
         for margin in (opts.margin, opts.tight_margin):
-            out = _solve_phase(run, ctx, T, checks, label, np.asarray(warm).reshape(-1), margin)
+            out = _solve_phase(run, ctx, len(warm) + 1, checks, label, warm.reshape(-1), margin)
             if out.status == "solved" or time.perf_counter() > run.deadline:
                 return out
     if problem.motions[ctx.index].pushes:
@@ -77,22 +81,38 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         # A push is straight: a sampled detour is no start for it.
         out = _solve_phase(run, ctx, T, checks, label, x0, opts.tight_margin)
         return out if out.status == "solved" else _clear_anyway(run, ctx, T, checks, label, out)
-    sampled = _sampled_start(run, ctx, T, FIRST_SHARE)
+    sampled = _sampled_start(run, ctx, FIRST_SHARE)
     if sampled is None:
         # No path past the objects this skeleton set down earlier: is one of them in
         # the way (the caller then moves it), or is the passage just hard to find?
-        share = FIRST_SHARE * problem.options.sampling_time
-        run.obstruction = relocate.find(run, ctx, min(share, run.deadline - time.perf_counter()))
+        run.obstruction = relocate.find(run, ctx, run.sampling(FIRST_SHARE))
         if run.obstruction is not None:
             return out
-        sampled = _sampled_start(run, ctx, T, 1.0 - FIRST_SHARE)
-    tries = [(sampled, opts.margin), (sampled, opts.tight_margin)] if sampled is not None \
-        else [(x0, opts.tight_margin)]
+        sampled = _sampled_start(run, ctx, 1.0 - FIRST_SHARE)
+    if sampled is None:
+        tries = [(x0, opts.tight_margin)]
+    else:
+        # A sampled path with more corners than the motion has waypoints would be cut
+        # short between them, through the walls it went around (blind7 p03: a maze's
+        # 12 corners on 10 segments): the motion gets the segments its path needs.
+        T = segments_for(sampled, T)
+        sampled = resample(sampled, T + 1)[1:-1].reshape(-1)
+        tries = [(sampled, opts.margin), (sampled, opts.tight_margin)]
     for start, margin in tries:
         out = _solve_phase(run, ctx, T, checks, label, start, margin)
         if out.status == "solved" or time.perf_counter() > run.deadline:
             return out
     return _clear_anyway(run, ctx, T, checks, label, out)
+
+
+def segments_for(path: np.ndarray, T: int) -> int:
+    """Segments of a motion started from the sampled `path` (K vertices): T, or where
+    the path has more corners, twice its K - 1 edges (room to spread the steps along
+    its long edges), at most MAX_SEGMENTS_RATIO * T unless its edges alone need more."""
+    edges = len(path) - 1
+    if edges <= T:
+        return T
+    return max(edges, min(2 * edges, MAX_SEGMENTS_RATIO * T))
 
 
 def _straight_line(run, ctx, T: int, checks: int, label: str):
@@ -158,24 +178,15 @@ def _clear_anyway(run, ctx, T: int, checks: int, label: str, out):
     return out
 
 
-def _sampled_start(run, ctx, T: int, share: float):
-    """(T-1) * n interior waypoints resampled from a sampled path found within `share`
-    of the sampling time, or None."""
+def _sampled_start(run, ctx, share: float):
+    """A sampled path (K, n) found within `share` of the sampling budget, or None."""
     problem = run.problem
-    opts = problem.options
-    budget = min(share * opts.sampling_time, run.deadline - time.perf_counter())
-    if budget <= 0:
-        return None
     world = problem.world
     m = problem.motions[ctx.index]
-    options = SamplingOptions(time_limit=budget, simplify_time=min(0.5, budget / 4),
-                              clearance=opts.tight_margin)
     path = sampled_path(run.checker, ctx.q_a, ctx.q_b, world.lower, world.upper,
                         body_poses=ctx.moved, held=held_spec(ctx.held),
-                        ignore=allowed_contacts(m), options=options)
-    if path is None:
-        return None
-    return resample(path, T + 1)[1:-1].reshape(-1)
+                        ignore=allowed_contacts(m), options=run.sampling(share))
+    return path
 
 
 def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):

@@ -61,7 +61,12 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
                   moved: dict, kin, checker, T: int, checks: int, rest_z: float | None,
                   label: str, keep=None, margin: float | None = None,
                   own: MotionMargins | None = None):
-    """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed).
+    """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed), over T segments.
+
+    Its cost is (T / waypoints) * sum |dq|^2: a motion given more segments than the
+    options' `waypoints` (a sampled path with many corners) is weighed as if it had
+    that many, so a motion's cost approximates the same integral of squared joint
+    speed whatever its segments (a straight line costs |q_b - q_a|^2 / waypoints).
 
     `keep(tau) -> bool` selects the sample points that get collision rows
     (all when None). `rest_z`: the height a pushed object keeps (None: nothing
@@ -89,16 +94,17 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     frac = np.array([s for _, _, s in pts])[:, None]
     matrices = body_matrices(poses)
     spec = held_spec(held)
-    hess = smoothness_hessian(T, n)
+    scale = T / opts.waypoints
+    hess = {key: scale * block for key, block in smoothness_hessian(T, n).items()}
 
     def evaluate(x):
         w = x.reshape(T - 1, n)
         qs = np.vstack([q_a, w, q_b])
         rows = Rows()
         d = np.diff(qs, axis=0)
-        rows.cost = float(np.sum(d * d))
+        rows.cost = scale * float(np.sum(d * d))
         for i in range(1, T):
-            rows.cost_grad[waypoint_block(i)] = 2.0 * (d[i - 1] - d[i])
+            rows.cost_grad[waypoint_block(i)] = 2.0 * scale * (d[i - 1] - d[i])
         rows.cost_hess = hess
         _step_rows(rows, d, T, label)
         samples_q = (1 - frac) * qs[where] + frac * qs[where + 1]

@@ -8,11 +8,9 @@ import dataclasses
 import math
 import time
 
-import numpy as np
-
 from tampcli.optimize import relocate
 from tampcli.optimize import verify as verify_mod
-from tampcli.optimize.assemble import assemble, walk
+from tampcli.optimize.assemble import assemble, motion_costs, walk
 from tampcli.optimize.keyframe_stage import (
     face_grips,
     keyframes,
@@ -126,7 +124,7 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
                                   worst_constraint=out.worst or label, keyframes=kf,
                                   choices=choices, placements=kfr.placements,
                                   failed_actions=problem.step_of_keyframe(ctx.index).index + 1)
-            waypoints[ctx.index] = out.x.reshape(T - 1, problem.n)
+            waypoints[ctx.index] = out.x.reshape(-1, problem.n)
             kkts[ctx.index] = out.kkt
             costs[ctx.index] = out.cost
             if attempt == 0 and run.cutoff is not None:
@@ -139,8 +137,8 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
                         worst_constraint=f"path bound {bound:.4g} after "
                         f"{_phase_label(problem, ctx.index)}")
         traj, phases, poses, grasps = assemble(problem, run.start, waypoints, contexts)
-        result = run.result("solved", cost=float(np.sum(np.diff(traj, axis=0) ** 2)),
-                            phase_costs=_phase_costs(traj, T, problem.n_keyframes),
+        phase_costs = motion_costs(traj, phases, T)
+        result = run.result("solved", cost=float(sum(phase_costs)), phase_costs=phase_costs,
                             kkt=dataclasses.replace(kfr.kkt, path=combined(kkts.values())),
                             trajectory=traj,
                             phases=phases, object_poses=poses, keyframes=kf, choices=choices,
@@ -157,11 +155,6 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
             break
     return run.result("infeasible", violation=math.inf, worst_constraint=problems[0],
                       keyframes=kf, choices=choices, placements=kfr.placements)
-
-
-def _phase_costs(traj, T, K):
-    d = np.sum(np.diff(traj, axis=0) ** 2, axis=1)
-    return tuple(float(np.sum(d[k * T:(k + 1) * T])) for k in range(K))
 
 
 def _phase_label(problem, k) -> str:

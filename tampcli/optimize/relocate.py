@@ -60,11 +60,10 @@ def relocatable(problem, motion: int, moved: dict) -> dict[str, int]:
     return {n: i for n, i in last.items() if problem.steps[i].target in regions}
 
 
-def find(run, ctx, budget: float) -> Obstruction | None:
-    """The Obstruction of motion `ctx` by objects this skeleton moved, or None."""
+def find(run, ctx, options: SamplingOptions) -> Obstruction | None:
+    """The Obstruction of motion `ctx` by objects this skeleton moved, or None;
+    `options`: the sampling query's budget and seed."""
     problem = run.problem
-    if budget <= 0:
-        return None
     movable = relocatable(problem, ctx.index, ctx.moved)
     if not movable:
         return None
@@ -72,8 +71,6 @@ def find(run, ctx, budget: float) -> Obstruction | None:
     held = held_spec(ctx.held)
     ignore = allowed_contacts(m) | frozenset(movable)
     kept = {n: p for n, p in ctx.moved.items() if n not in movable}
-    options = SamplingOptions(time_limit=budget, simplify_time=min(0.5, budget / 4),
-                              clearance=problem.options.tight_margin)
     path = sampled_path(run.checker, ctx.q_a, ctx.q_b, problem.world.lower, problem.world.upper,
                         body_poses=kept, held=held, ignore=ignore, options=options)
     if path is None:

@@ -7,6 +7,7 @@ import time
 
 import numpy as np
 
+from tampcli.geometry.sampled_path import SamplingOptions
 from tampcli.optimize.backends import BACKENDS, Slsqp
 from tampcli.optimize.grips import Kinematics
 from tampcli.optimize.problem import TrajectoryProblem
@@ -44,6 +45,16 @@ class Run:
         self.iterations += out.iterations
         self.nlp_solves += 1
         return out
+
+    def sampling(self, share: float) -> SamplingOptions:
+        """A sampling query's options: `share` of the motion's budget of validity checks
+        (a fifth of it for shortcutting), the tight margin as clearance, a seed drawn
+        from this solve's generator, the solve's deadline."""
+        opts = self.problem.options
+        checks = max(1, int(share * opts.sampling_checks))
+        return SamplingOptions(checks=checks, simplify_checks=min(2000, checks // 4),
+                               seed=int(self.rng.integers(1, 1 << 31)), deadline=self.deadline,
+                               clearance=opts.tight_margin)
 
     def path_nlp(self, evaluate, layout, x0, bounds):
         """A motion's NLP, by the options' backend (`nlp`)."""

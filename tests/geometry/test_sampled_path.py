@@ -50,7 +50,7 @@ def test_a_disk_goes_through_a_slot_with_millimetres_to_spare(gap):
         checker = CollisionChecker(world)
         start, goal = np.array([-0.5, -0.5]), np.array([0.5, -0.5])
         assert checker.min_distance((start + goal) / 2, static=False) < 0  # the straight line hits
-        options = SamplingOptions(time_limit=120.0, endpoint_slack=0.0, resolution=0.002)
+        options = SamplingOptions(checks=2_000_000, endpoint_slack=0.0, resolution=0.002)
         path = sampled_path(checker, start, goal, world.lower, world.upper, options=options)
         assert path is not None
         np.testing.assert_allclose(path[[0, -1]], [start, goal])
@@ -67,7 +67,7 @@ def test_no_path_when_the_slot_is_narrower_than_the_disk():
     with World(_corridor_scene(0.09)) as world:
         checker = CollisionChecker(world)
         path = sampled_path(checker, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
-                            options=SamplingOptions(time_limit=0.5))
+                            options=SamplingOptions(checks=2000))
         assert path is None
 
 
@@ -75,10 +75,54 @@ def test_clearance_is_kept():
     with World(_corridor_scene(0.2)) as world:
         checker = CollisionChecker(world)
         path = sampled_path(checker, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
-                            options=SamplingOptions(time_limit=30.0, clearance=0.02,
+                            options=SamplingOptions(checks=200_000, clearance=0.02,
                                                     endpoint_slack=0.0))
         assert path is not None
         assert _fine_min_distance(checker, path) >= 0.02 - 2e-3
+
+
+class _Counting:
+    """The checker, counting the configurations asked about (one per validity check)."""
+
+    def __init__(self, checker):
+        self.checker, self.asked = checker, 0
+
+    def distances(self, *args, **kwargs):
+        self.asked += 1
+        return self.checker.distances(*args, **kwargs)
+
+
+def test_the_same_seed_gives_the_same_path_and_another_seed_another():
+    with World(_corridor_scene(0.14)) as world:
+        checker = CollisionChecker(world)
+
+        def run(seed):
+            return sampled_path(checker, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
+                                options=SamplingOptions(checks=100_000, seed=seed))
+
+        first, again, other = run(3), run(3), run(4)
+        assert first is not None and other is not None
+        np.testing.assert_array_equal(first, again)
+        assert first.shape != other.shape or not np.array_equal(first, other)
+
+
+def test_the_budget_counts_validity_checks():
+    with World(_corridor_scene(0.09)) as world:  # no path: the whole budget is spent
+        counting = _Counting(CollisionChecker(world))
+        options = SamplingOptions(checks=3000, simplify_checks=0)
+        assert sampled_path(counting, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
+                            options=options) is None
+        # Two queries at the ends; OMPL stops within an edge's checks of the budget.
+        assert 3000 <= counting.asked <= 3000 + 2 + 200
+
+
+def test_a_deadline_passed_stops_the_query_at_once():
+    with World(_corridor_scene(0.09)) as world:
+        counting = _Counting(CollisionChecker(world))
+        options = SamplingOptions(checks=10**9, deadline=0.0)
+        assert sampled_path(counting, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
+                            options=options) is None
+        assert counting.asked <= 2 + 200
 
 
 def test_resample_spaces_waypoints_evenly_along_the_path():
@@ -93,6 +137,8 @@ def test_bad_options_are_refused():
         SamplingOptions(resolution=0.0)
     with pytest.raises(ValueError):
         SamplingOptions(clearance=-1.0)
+    with pytest.raises(ValueError):
+        SamplingOptions(checks=0)
 
 
 def test_nothing_reaches_the_terminal_not_even_at_exit():
@@ -105,7 +151,7 @@ def test_nothing_reaches_the_terminal_not_even_at_exit():
         "    c = CollisionChecker(w)\n"
         "    assert sampled_path(c, [-0.5, -0.5], [0.5, -0.5], w.lower, w.upper) is not None\n"
         "    assert sampled_path(c, [-0.5, -0.5], [0.5, -0.5], w.lower, w.upper,\n"
-        "                        options=SamplingOptions(time_limit=0.05, clearance=0.5)) is None\n"
+        "                        options=SamplingOptions(checks=200, clearance=0.5)) is None\n"
     ).replace("sampled_path\n", "sampled_path, SamplingOptions\n", 1)
     run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
                          cwd=ROOT, timeout=120)

@@ -23,7 +23,7 @@ from .helpers import ROOT, ops
 
 # RRT-Connect's time through a 5 mm gap is heavy-tailed: a generous budget keeps
 # the test about the schedule, not about the sampler's luck.
-PATIENT = OptimizeOptions(sampling_time=30.0, time_limit=120.0)
+PATIENT = OptimizeOptions(sampling_checks=120_000, time_limit=120.0)
 
 
 @pytest.fixture

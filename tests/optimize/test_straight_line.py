@@ -58,3 +58,35 @@ def test_a_free_motion_takes_no_nlp(planar):
     # (the path result counts the solves of the stages before it too)
     assert path.nlp_solves == keyframes.nlp_solves
     assert np.allclose(span, np.linspace(span[0], span[-1], len(span)), atol=1e-12)
+
+
+def test_a_motion_on_more_segments_is_weighed_as_if_it_had_the_options(planar):
+    """phase_rows_fn's cost on T_k segments is (T_k / waypoints) * sum |dq|^2: the same
+    |dq|^2 / waypoints for the straight line on any number of segments, with its gradient
+    scaled alike (checked against finite differences off the line)."""
+    from tampcli.optimize.assemble import walk
+    from tampcli.optimize.grips import Kinematics
+    from tampcli.optimize.path import phase_rows_fn
+
+    scene, modes, world = planar
+    problem = lower(ops("(pick o start)",), scene, modes, world)
+    kfr = solve(problem, "keyframes")
+    ctx = walk(problem, kfr.keyframes, kfr.choices, world.start)[0]
+    T0 = problem.options.waypoints
+    rng = np.random.default_rng(1)
+    for T in (T0, 2 * T0 + 3):
+        evaluate, layout = phase_rows_fn(problem, problem.motions[0], ctx.q_a, ctx.q_b,
+                                         ctx.held, ctx.moved, Kinematics(world),
+                                         problem.checker, T, 0, None, "motion")
+        line = np.linspace(ctx.q_a, ctx.q_b, T + 1)[1:-1].reshape(-1)
+        d = ctx.q_b - ctx.q_a
+        np.testing.assert_allclose(evaluate(line).cost, float(d @ d) / T0, rtol=1e-12)
+        x = line + rng.normal(0.0, 0.01, line.size)
+        slices = layout.slices()
+        grad = np.zeros(layout.size)
+        for block, v in evaluate(x).cost_grad.items():
+            grad[slices[block]] += v
+        h = 1e-6
+        fd = [(evaluate(x + h * e).cost - evaluate(x - h * e).cost) / (2 * h)
+              for e in np.eye(layout.size)]
+        np.testing.assert_allclose(grad, fd, atol=1e-6)
