@@ -64,7 +64,12 @@ def run(args, ui) -> int:
         violations.extend({"kind": "geometric", "step": None, "line": None, "action": None,
                            "reason": v, "text": v} for v in found)
     physics = None
-    if args.physics:
+    if args.physics and not checked.raw.trajectory:
+        # Nothing moves: the replay has nothing to judge, the verdict above says why
+        # (an unsolved solution.json is invalid, not bad input).
+        ui.warn(f"--physics: nothing replayed: the solution has no trajectory "
+                f"(status {checked.raw.status})")
+    elif args.physics:
         physics, drifted, overlaps = _physics(args)
         violations.extend({"kind": "physics", "step": None, "line": None, "action": None,
                            "phase": v.first.phase if v.first else None,

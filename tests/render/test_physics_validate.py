@@ -126,6 +126,22 @@ def test_non_positive_tolerance_exits_2(cli, leaning, flag):
     assert run.code == 2 and flag in run.err and "Traceback" not in run.err
 
 
+def test_physics_of_an_unsolved_solution_is_invalid_not_bad_input(cli, tmp_path):
+    """A solution.json that `solve` left unsolved has nothing to replay: the verdict is
+    the plain one (invalid, exit 1), with a warning, not a rendering error."""
+    import dataclasses
+
+    unsolved = dataclasses.replace(tower_solution(), status="limit", reason="time limit",
+                                   plan=(), trajectory=(), phases=(), objects={})
+    path = tmp_path / "unsolved.json"
+    solution_file.write(unsolved, path)
+    run = cli("validate", "--physics", DOMAIN, TOWER_PROBLEM, path)
+    assert run.code == 1, run.err
+    assert "nothing replayed" in run.err and "render" not in run.err + run.out
+    data = json.loads(cli("validate", "--json", "--physics", DOMAIN, TOWER_PROBLEM, path).out)
+    assert data["valid"] is False and "physics" not in data
+
+
 def test_physics_of_a_plan_file_exits_2(cli, tmp_path):
     plan = tmp_path / "plan.txt"
     plan.write_text("(pick c start)\n")
