@@ -130,11 +130,29 @@ def inside_rect(xy, rect: BodyInfo, inset: float) -> bool:
 
 
 def region_misfit(obj: str, info: BodyInfo, region) -> str | None:
-    """Why the object's footprint fits the region in no orientation (None: it fits
-    one way or the other)."""
+    """Why the object's footprint fits the region at no yaw (None: it fits at some);
+    exact, so that a refusal is a proof: a 14 x 1 cm stick fits a 12 x 12 cm region
+    turned 45 degrees, not square."""
     w, h = region.size
     a, b = 2 * info.half[0], 2 * info.half[1]
-    if (a <= w and b <= h) or (b <= w and a <= h):
+    if rectangle_fits(a, b, w, h):
         return None
     return (f"{obj} ({100 * a:.1f} x {100 * b:.1f} cm) does not fit region {region.name} "
-            f"({100 * w:.1f} x {100 * h:.1f} cm)")
+            f"({100 * w:.1f} x {100 * h:.1f} cm) at any yaw")
+
+
+def rectangle_fits(a: float, b: float, w: float, h: float, tol: float = 1e-12) -> bool:
+    """Whether an a x b rectangle fits inside a w x h one at some turn theta in
+    [0, pi/2]: a cos + b sin <= w and a sin + b cos <= h. With R = |(a, b)| and
+    alpha = atan2(b, a) these read R cos(theta - alpha) <= w and R sin(theta + alpha)
+    <= h; the set of feasible turns is a union of closed intervals, so it is empty
+    unless one of its ends, theta = 0, pi/2 or a root of either, is feasible."""
+    r, alpha = math.hypot(a, b), math.atan2(b, a)
+    candidates = [0.0, 0.5 * math.pi]
+    if w < r:
+        candidates += [alpha + math.acos(w / r), alpha - math.acos(w / r)]
+    if h < r:
+        candidates += [math.asin(h / r) - alpha, math.pi - math.asin(h / r) - alpha]
+    return any(a * math.cos(t) + b * math.sin(t) <= w + tol
+               and a * math.sin(t) + b * math.cos(t) <= h + tol
+               for t in candidates if -tol <= t <= 0.5 * math.pi + tol)

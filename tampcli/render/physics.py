@@ -76,6 +76,10 @@ class _Run:
         self.masses = {name: object_mass(inputs.scene.body(name), settings.density)
                        for name in first.poses if inputs.scene.body(name).shape != "urdf"}
         self.sim.make_dynamic(self.masses)
+        # A turn about its own upright axis leaves a cylinder as it was, and any turn a
+        # sphere: not drift (the planner lets either turn while pushed).
+        self.symmetry = {name: {"cylinder": "axis", "sphere": "full"}.get(
+            inputs.scene.body(name).shape) for name in first.poses}
         self.steps = 0
         self.tracking = 0.0
         self.phase_drifts: dict[str, list[PhaseDrift]] = {name: [] for name in first.poses}
@@ -223,7 +227,7 @@ class _Run:
             if name == self.sim.held or name not in self.phase_drifts:
                 continue
             planned = transforms.pose_from_xyzquat(poses[min(k + 1, len(poses) - 1)])
-            distance, angle = _drift(planned, self.sim.pose_of(name))
+            distance, angle = _drift(planned, self.sim.pose_of(name), self.symmetry.get(name))
             self.phase_drifts[name].append(PhaseDrift(k, self._label(k), distance, angle))
 
     def report(self) -> PhysicsReplay:
@@ -231,7 +235,7 @@ class _Run:
         objects = []
         for name, planned in final.poses.items():
             simulated = self.sim.pose_of(name)
-            distance, angle = _drift(planned, simulated)
+            distance, angle = _drift(planned, simulated, self.symmetry.get(name))
             objects.append(ObjectDrift(
                 name, self.masses.get(name, 0.0), distance, angle,
                 tuple(transforms.xyzquat_from_pose(planned)),
@@ -246,8 +250,16 @@ class _Run:
                      for name, k, depth, contact in self.overlaps)
 
 
-def _drift(planned: np.ndarray, simulated: np.ndarray) -> tuple[float, float]:
-    """(position drift in m, rotation drift in degrees)."""
-    rot = planned[:3, :3].T @ simulated[:3, :3]
-    angle = float(np.linalg.norm(transforms.rotation_log(rot)))
+def _drift(planned: np.ndarray, simulated: np.ndarray,
+           symmetry: str | None = None) -> tuple[float, float]:
+    """(position drift in m, rotation drift in degrees). `symmetry`: "axis" (a cylinder:
+    only the turn of its own z axis counts), "full" (a sphere: no turn counts) or None."""
+    if symmetry == "full":
+        angle = 0.0
+    elif symmetry == "axis":
+        c = float(np.clip(planned[:3, 2] @ simulated[:3, 2], -1.0, 1.0))
+        angle = math.acos(c)
+    else:
+        rot = planned[:3, :3].T @ simulated[:3, :3]
+        angle = float(np.linalg.norm(transforms.rotation_log(rot)))
     return float(np.linalg.norm(simulated[:3, 3] - planned[:3, 3])), math.degrees(angle)

@@ -352,3 +352,34 @@ def test_path_cone_rows_take_the_face_normal_in_the_world(kind):
 
     assert np.all(rows_for(normal) > 0.0)
     assert np.min(rows_for(tangent)) < -0.01
+
+
+def test_a_pushed_cylinder_may_turn_with_the_hand(wall):
+    """A cylinder's footprint is the same at any yaw: neither its push's keyframe rows
+    nor its path rows hold its yaw (a box's do, test_path_rows_panda)."""
+    from tampcli.geometry.world import World
+    from tampcli.optimize.assemble import walk
+    from tampcli.optimize.modes import Mode
+    from tampcli.optimize.stages import keyframe_layout, keyframe_rows
+
+    scene, _, _ = wall
+    can = dataclasses.replace(scene, bodies=tuple(
+        dataclasses.replace(b, shape="cylinder", size=(0.025, b.size[2])) if b.name == "a"
+        else b for b in scene.bodies))
+    modes = {"push": Mode("push", "push", "?b", to="?to", params=("?b", "?from", "?to"))}
+    with World(can) as world:
+        problem = lower(ops("(push a start goal)"), can, modes, world)
+        assert problem.bodies["a"].disk
+        placements, _ = final_guess(problem)
+        vals, choices = keyframe_guess(problem, placements, world.start,
+                                       np.random.default_rng(0))
+        layout = keyframe_layout(problem)
+        rows = keyframe_rows(problem, layout.unpack(layout.pack(vals.blocks())), choices,
+                             Kinematics(world), problem.checker, world.start,
+                             collisions=False)
+        assert "pushed object turns" not in {lab.what for lab in rows.eq.labels}
+        ctx = walk(problem, vals, choices, world.start)[1]
+        path = _path_rows_check(problem, world, ctx.held, ctx.q_a, ctx.q_b)
+        assert not path.eq.values
+        assert {lab.what for lab in path.ineq.labels} == {
+            "motion not into the pushed face (a drag)"}

@@ -4,6 +4,7 @@ the verdict names the cubes that fell and the action that made them fall."""
 
 import json
 
+import numpy as np
 import pytest
 from tower_solution import DOMAIN, TOWER, tower_solution
 
@@ -184,3 +185,19 @@ def test_quick_library_solutions_pass_physics(cli, key, tmp_path):
 def test_every_library_solution_passes_physics(cli, scene, tmp_path):
     code, data = _solve_and_validate(cli, scene, tmp_path)
     assert code == 0, data["violations"]
+
+
+def test_a_turn_about_its_own_axis_is_no_drift_for_a_cylinder_or_a_sphere():
+    from tampcli.geometry import transforms
+    from tampcli.render.physics import _drift
+
+    planned = transforms.pose_from_xyzquat((0.4, 0.0, 0.05, 0.0, 0.0, 0.0, 1.0))
+    turned = planned.copy()
+    c, s = np.cos(0.9), np.sin(0.9)
+    turned[:3, :3] = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    tipped = planned.copy()
+    tipped[:3, :3] = np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+    assert _drift(planned, turned)[1] == pytest.approx(np.degrees(0.9))  # a box
+    assert _drift(planned, turned, "axis")[1] == pytest.approx(0.0, abs=1e-6)
+    assert _drift(planned, tipped, "axis")[1] == pytest.approx(np.degrees(0.9))
+    assert _drift(planned, tipped, "full")[1] == 0.0

@@ -225,7 +225,8 @@ class Push(ModeKind):
         if not walk.planar:
             C.upright(walk.rows.eq, step.name, H1, step.obj)
             C.rest_height(walk.rows.eq, step.name, H1, step.rest_z, step.support)
-            same_yaw(walk.rows.eq, step.name, H0, H1)
+            if not info.disk:  # a cylinder's or sphere's yaw changes nothing
+                same_yaw(walk.rows.eq, step.name, H0, H1)
         cone_rows(walk.rows.ineq, step.name, H0, H1, face.angle)
         walk.state.pop(step.obj)
         walk.placement_rows(step, H1)
@@ -240,7 +241,8 @@ class Push(ModeKind):
         T = len(qs) - 1
         poses = [held_pose(kin.frame(q), held.grip, held.t) for q in qs]
         blocks = [waypoint_block(i) if 0 < i < T else None for i in range(T + 1)]
-        path_rows(rows.ineq, rows.eq, label, poses, blocks, held.grip, problem.planar)
+        path_rows(rows.ineq, rows.eq, label, poses, blocks, held.grip, problem.planar,
+                  turns=problem.bodies[held.name].disk)
 
     def switch(self, walk, step):
         walk.release(step.obj)

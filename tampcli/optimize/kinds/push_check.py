@@ -5,7 +5,7 @@ the start of the pushing motion (push_contact.contacted_face); the pusher
 touches it (within the touch tolerance) without going into the object, also
 on the last segment of its approach (which the collision check leaves to the
 mode); every step of the object moves into that face within the friction
-cone; the object keeps its yaw (within TURN), its height and stays upright.
+cone; a box keeps its yaw (within TURN), and every object its height, upright.
 """
 
 from __future__ import annotations
@@ -20,9 +20,11 @@ from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, contacted_face
 PENETRATION = 1e-3  # m: deeper than this into the object is more than touching
 SLACK = 1e-3  # of a step's length: rounding in the cone test
 STILL = 1e-6  # m: shorter steps have no direction
-# rad: the object turns with the hand at most this much between the keyframes (which
-# hold its yaw exactly): the arm's two fingers touch the face along a line and can
-# carry the moment of such a turn; the planar disk cannot turn at all.
+# rad: a box turns with the hand at most this much between the keyframes (which hold
+# its yaw exactly): the arm's two fingers touch the face along a line and can carry the
+# moment of such a turn; the planar disk cannot turn at all. A cylinder or sphere
+# (BodyInfo.disk) may turn: its footprint is the same at any yaw, and only where its
+# centre goes is held to the push rule.
 TURN = math.radians(2.0)
 LIFT = 1e-3  # m and 1 - cos(tilt): the pushed object keeps its height and stays upright
 APPROACH_SAMPLES = 10  # points on the approach's last segment
@@ -64,7 +66,7 @@ def check_push(walk, step, touch: float) -> list[str]:
     for i, pose in enumerate(objs):
         turn = math.atan2(before[0, 0] * pose[1, 0] - before[1, 0] * pose[0, 0],
                           before[0, 0] * pose[0, 0] + before[1, 0] * pose[1, 0])
-        if abs(turn) > TURN:
+        if abs(turn) > TURN and not info.disk:
             out.append(f"{name}: {obj} turns {math.degrees(turn):.1f} deg by waypoint "
                        f"{start + i}")
             break

@@ -198,14 +198,15 @@ def offset_rows(rows: RowSet, step: str, t: float, t_block: str, face: Face) -> 
 
 
 def path_rows(ineq: RowSet, eq: RowSet, step: str, poses, blocks, grip: FaceGrip,
-              planar: bool, mu: float = PUSH_FRICTION) -> None:
+              planar: bool, mu: float = PUSH_FRICTION, turns: bool = False) -> None:
     """The push rule between consecutive waypoints of the pushing motion.
 
     `poses[i]`: the object's grips.HeldPose at waypoint i (all of them, the
     fixed keyframes at both ends included); `blocks[i]`: that waypoint's block
     (None: fixed). Cone rows for every step, with the face's normal and
     tangent where the push starts (the object does not turn); for the arm,
-    the yaw of every waypoint equal to the first's.
+    the yaw of every waypoint equal to the first's, unless the object `turns`
+    (a cylinder or sphere, whose footprint a turn leaves as it was).
     """
     # The tool's axes in the world at the start: the object's (R_tool @ G) times G^T;
     # the face's normal and tangent are given in the tool's frame.
@@ -221,7 +222,7 @@ def path_rows(ineq: RowSet, eq: RowSet, step: str, poses, blocks, grip: FaceGrip
                 if b is not None:
                     jac = add_jac(jac, {b: side * (w @ h.dpos_dq)[None, :]})
             ineq.add(np.array([float(w @ d)]), jac, label)
-    if planar:
+    if planar or turns:
         return
     a0 = poses[0].axes[:, 0]
     for h, b in zip(poses, blocks, strict=True):
