@@ -9,7 +9,8 @@ the task's fact and action variables (symbolic.py) and the carry state
 - a carried object keeps its offset to the disk over a segment; any other
   object stays where it is;
 - grasp and push start (attach) put the disk within reach of the object
-  (`radius` + its largest half extent, the suction rule of docs/formats.md);
+  (`radius` + its largest half extent: the MINLP's own, conservative reach; the
+  optimizer's touch depends on the face, docs/formats.md "Grasp");
   the disk must also stay outside the object's footprint (collide.py), so it
   touches the object's side;
 - place and push end put the object's footprint inside the target region

@@ -19,7 +19,9 @@ cost whatever was learned: the cheapest skeleton of the *plain* task not
 drawn yet.
 
 Actions that serve nothing are not worth an NLP: a skeleton made of a
-solved one plus more actions ("superseded": it can only cost more), or of
+solved one plus more actions ("superseded": its symbolic cost is higher, and its
+extra stops can lower the motion's cost only by splitting it, README "Objective
+and bounds"), or of
 an evaluated one that already meets everything learned plus more actions
 ("redundant": the extras are symbolically useless given what is known), is
 deferred until every other skeleton has been drawn, unless its extra actions
@@ -270,7 +272,8 @@ class LearningSource:
         return plan
 
     def _why_defer(self, names: tuple[str, ...]) -> str | None:
-        """"superseded": a solved skeleton plus more actions (it can only cost more);
+        """"superseded": a solved skeleton plus more actions (extra actions that serve
+        nothing symbolically);
         "redundant": an evaluated skeleton that already meets everything learned,
         plus actions; both come last, after every other skeleton."""
         if any(_is_subsequence(s, names) for s in self._solved):
