@@ -172,7 +172,7 @@ class _Search(StageSteps):
             if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
                 stop = "time"
                 break
-            if self.rank >= self.options.max_skeletons:
+            if self.rank >= self.options.skeleton_limit(self.incumbent is not None):
                 stop = "skeletons"
                 break
             if self.options.first and self.incumbent is not None:

@@ -88,7 +88,7 @@ def _how(ending: Ending, options) -> str:
     if ending.stop == "time":
         return f"time limit ({options.time_limit:g} s) reached {none}"
     if ending.stop == "skeletons":
-        return f"skeleton limit ({options.max_skeletons}) reached {none}"
+        return f"skeleton limit ({options.skeleton_limit(False):g}) reached {none}"
     if ending.stop != "exhausted":
         return f"{ending.stop} {none}"
     prefixes = ending.learned_prefixes

@@ -184,7 +184,7 @@ class _ParallelSearch(_Search):
 
     def _draw_next(self, iterator, out: deque[_Out]) -> str | None:
         """Draw one skeleton: a stop reason, or None (sent out, or pruned here)."""
-        if self.rank >= self.options.max_skeletons:
+        if self.rank >= self.options.skeleton_limit(self.incumbent is not None):
             return "skeletons"
         if self.options.first and self.incumbent is not None:
             return "first"

@@ -3,6 +3,7 @@ protocol, events for live displays, the result."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Protocol
@@ -10,12 +11,18 @@ from typing import Any, Protocol
 from tampcli.errors import require_int, require_number
 from tampcli.solution import SkeletonRecord
 
+DEFAULT_SKELETONS = 20  # drawn at most once there is an answer, unless `-k` says otherwise
+
 
 @dataclass(frozen=True)
 class BnBOptions:
     """Options of the skeleton search (checked when built).
 
-    max_skeletons: skeletons drawn at most (a count, `-k`).
+    max_skeletons: skeletons drawn at most (a count, `-k`); None (the default):
+        DEFAULT_SKELETONS once there is an answer and no cap before one, so that the
+        time limit, not a count, ends a search that has found nothing (gen1's planar
+        instances: 24 orders of equally cheap pushes used up a cap of 20, and the
+        picks and places that solve them were never drawn).
     time_limit: seconds for the whole search, drawing skeletons included (checked
         between NLP solves); infinity is no limit.
     symbolic_weight: w (>= 0) in objective = trajectory cost (rad^2 or m^2) + w * symbolic
@@ -33,7 +40,7 @@ class BnBOptions:
         elimination): with an answer, the search stops at `time_limit - reserve`.
     """
 
-    max_skeletons: int = 20
+    max_skeletons: int | None = None
     time_limit: float = 120.0
     symbolic_weight: float = 0.1
     anytime: bool = False
@@ -42,12 +49,19 @@ class BnBOptions:
     jobs: int = 1
     reserve: float = 0.0
 
+    def skeleton_limit(self, answered: bool) -> float:
+        """How many skeletons the search draws at most, with or without an answer."""
+        if self.max_skeletons is not None:
+            return self.max_skeletons
+        return DEFAULT_SKELETONS if answered else math.inf
+
     def search_limit(self, answered: bool) -> float:
         """When the search stops: the reserve is only for an answer's elimination."""
         return self.time_limit - self.reserve if answered else self.time_limit
 
     def __post_init__(self):
-        require_int(self.max_skeletons, "max_skeletons", 1)
+        if self.max_skeletons is not None:
+            require_int(self.max_skeletons, "max_skeletons", 1)
         require_int(self.jobs, "jobs", 1)
         require_number(self.time_limit, "time_limit", positive=True, unit="s", finite=False)
         require_number(self.symbolic_weight, "symbolic_weight")

@@ -10,6 +10,7 @@ from rich.table import Table
 
 from tampcli import solution as solution_file
 from tampcli.bnb import BnBOptions, Event
+from tampcli.bnb.values import DEFAULT_SKELETONS
 from tampcli.errors import ExitCode, OptionError, UsageError
 from tampcli.optimize.backends import BACKENDS
 from tampcli.optimize.options import OptimizeOptions
@@ -32,6 +33,7 @@ class Flag:
     help: str
     short: str | None = None
     choices: tuple[str, ...] | None = None
+    default_help: str | None = None  # how --help states the default, where not a value
 
     @property
     def default(self):
@@ -40,7 +42,9 @@ class Flag:
 
 
 FLAGS = (
-    Flag("--skeletons", "bnb", "max_skeletons", int, "K", "skeletons to draw at most", "-k"),
+    Flag("--skeletons", "bnb", "max_skeletons", int, "K", "skeletons to draw at most", "-k",
+         default_help=f"{DEFAULT_SKELETONS} once a solution is found, no cap before one: the "
+         "time limit ends a search that finds nothing"),
     Flag("--time-limit", "bnb", "time_limit", float, "S", "seconds for the whole solve"),
     Flag("--symbolic-weight", "bnb", "symbolic_weight", float, "W",
          "objective = trajectory cost + W * symbolic cost"),
@@ -72,9 +76,10 @@ def add_parser(p) -> None:
             p.add_argument(*names, dest=flag.field, action="store_true", help=flag.help)
         else:
             shown = "g" if flag.type in (int, float) else "s"
+            default = flag.default_help or f"%(default){shown}"
             p.add_argument(*names, dest=flag.field, type=flag.type, default=flag.default,
                            choices=flag.choices, metavar=flag.metavar,
-                           help=f"{flag.help} (default %(default){shown})")
+                           help=f"{flag.help} (default {default})")
     p.add_argument("--out", metavar="FILE", help="write solution.json here (whatever the outcome)")
     p.add_argument("--video", metavar="FILE", help="render the solution to FILE (.mp4 or .gif)")
     p.add_argument("--method", choices=sorted(METHODS), default="bnb",

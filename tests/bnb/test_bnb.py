@@ -213,6 +213,27 @@ def test_skeleton_limit():
     assert "skeleton limit (3)" in res.reason
 
 
+def test_by_default_only_an_answer_caps_the_skeletons():
+    """Without -k, a search that has found nothing goes on past DEFAULT_SKELETONS (the
+    time limit ends it); one with an answer draws that many at most (anytime: it
+    would go on)."""
+    from tampcli.bnb.values import DEFAULT_SKELETONS
+
+    n = DEFAULT_SKELETONS + 15
+    src = [((f"a{i}",), i) for i in range(n)]
+    failing = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(n)})
+    res = branch_and_bound(Source(src), failing, BnBOptions())
+    assert res.status == "limit" and len(res.skeletons) == n
+    assert res.stats["stop"] == "every skeleton tried"
+    last = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(n - 1)})
+    assert branch_and_bound(Source(src), last, BnBOptions()).status == "solved"
+    answered = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(1, n)})
+    free = [(names, 0) for names, _ in src]  # none priced out by the answer
+    res = branch_and_bound(Source(free), answered, BnBOptions(anytime=True))
+    assert res.status == "solved" and len(res.skeletons) == DEFAULT_SKELETONS
+    assert res.stats["stop"] == "skeleton limit"
+
+
 def test_time_limit_with_fake_clock():
     ticks = iter(range(1000))
     src = Source([((f"a{i}",), i) for i in range(10)])
