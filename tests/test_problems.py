@@ -75,12 +75,14 @@ REACH = {"panda": (0.3, 0.7), "kuka_iiwa": (0.4, 0.75), "xarm6": (0.25, 0.5)}
 # aligned fits), and are indexed in their own READMEs.
 ROBUST = "robust-"
 BLIND = "blind"  # problems/blind2/: one folder per problem, each with its own domain
+GENERATED = "gen"  # problems/gen1: instances drawn by its own generate.py
 
 
 def _written_blind(problem: Path) -> bool:
-    """A problem of the sets written blind (not the library's expected table)."""
+    """A problem of the sets written blind or generated (not the library's expected
+    table)."""
     top = problem.relative_to(PROBLEMS).parts[0]
-    return top.startswith(ROBUST) or top.startswith(BLIND)
+    return top.startswith((ROBUST, BLIND, GENERATED))
 
 
 def _problem_files() -> list[Path]:
