@@ -1,4 +1,4 @@
-"""Robustness: the problems written blind (problems/robust-*, blind2..blind8), solved and judged thrice.
+"""Robustness: the problems written blind (problems/robust-*, blind2..blind8) and the generated ones (problems/gen1), solved and judged thrice.
 
 Each problem is solved by `tampcli solve --json` in its own process (time
 limit per problem, skeleton cap high enough that time ends a search), then
@@ -80,6 +80,16 @@ BLIND8 = {"p01": ("swap via buffer", 8), "p02": ("walled bin, clutter", 8),
           "p05": ("push behind blockers", 6), "p06": ("tight packing", 6),
           "p07": ("long sequence", 10), "p08": ("ringed target", 6)}
 
+# problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
+# actions of the shortest plan where known (its README: the generator's estimates were
+# off where pushes or a blocking neighbour change the count; None: not known).
+GEN1 = {**{f"arm-clutter-s0{i}": ("generated clutter", n)
+           for i, n in zip(range(1, 7), (6, 2, 4, 6, 2, 4), strict=True)},
+        **{f"arm-stack-s0{i}": ("generated stacking", n)
+           for i, n in zip(range(1, 6), (6, 12, 6, 6, 6), strict=True)},
+        **{f"planar-s0{i}": ("generated planar", n)
+           for i, n in zip(range(1, 6), (4, None, 3, None, 2), strict=True)}}
+
 
 def problems() -> list[tuple[str, str, str, int]]:
     """(folder, stem, class, expected actions) of every robustness problem."""
@@ -92,12 +102,15 @@ def problems() -> list[tuple[str, str, str, int]]:
     rows += [("blind6", stem, cls, n) for stem, (cls, n) in sorted(BLIND6.items())]
     rows += [("blind7", stem, cls, n) for stem, (cls, n) in sorted(BLIND7.items())]
     rows += [("blind8", stem, cls, n) for stem, (cls, n) in sorted(BLIND8.items())]
+    rows += [("gen1", stem, cls, n) for stem, (cls, n) in sorted(GEN1.items())]
     return rows
 
 
 def files(folder: str, stem: str) -> tuple[Path, Path]:
     """(domain, problem): the library's split layout, or a folder of its own."""
     own = ROOT / "problems" / folder / stem
+    if (own / "problem.pddl").is_file():  # a generated instance (problems/gen1)
+        return own / "domain.pddl", own / "problem.pddl"
     if own.is_dir():
         return own / "domain.pddl", own / f"{stem}.pddl"
     return ROOT / "domains" / folder / "domain.pddl", ROOT / "problems" / folder / f"{stem}.pddl"
@@ -212,6 +225,7 @@ def write(rows, ranks, limit: float, out: Path) -> None:
     ]
     for folder, stem, cls, expected, r in rows:
         actions = "-" if r["actions"] in (None, 0) else str(r["actions"])
+        expected = "?" if expected is None else expected
         lines.append(f"| {folder}/{stem} | {cls} | {r['status']} | {mark(r['valid'])} | "
                      f"{mark(r['checker'])} | {mark(r.get('physics'))} | "
                      f"{actions} ({expected}) | "
