@@ -6,7 +6,10 @@ before (pick a floor): collision panda_hand vs b`). When the worst row left
 violated names a movable body that the action did not handle itself, that
 body stood in the way: branch and bound passes the finding to the skeleton
 source (search/learned.py), which orders next the skeletons that move it
-first. A wrong guess costs order, never a solution: the source falls back to
+first. A push whose own rule is the worst row (`(push a x y): motion not into
+the pushed face`: from where `a` stands no face's friction cone leads into the
+target) teaches the same of `a` itself: skeletons that move it elsewhere before
+that push come next. A wrong guess costs order, never a solution: the source falls back to
 the plain enumeration.
 """
 
@@ -19,6 +22,7 @@ from tampcli.search.learned import Blocker
 _ACTION = re.compile(r"(\([^()]*\))")
 _OVERLAP = re.compile(r": overlaps (?P<b>[^\s:]+)")
 _COLLISION = re.compile(r": collision (?P<a>[^\s:]+) vs (?P<b>[^\s:]+)")
+_PUSH_RULE = re.compile(r": motion not into the pushed face")
 
 
 def blocker_of(worst: str | None, movable: frozenset[str]) -> Blocker | None:
@@ -30,6 +34,11 @@ def blocker_of(worst: str | None, movable: frozenset[str]) -> Blocker | None:
         return None
     name = action.group(1)
     args = set(name.strip("()").split()[1:])
+    if _PUSH_RULE.search(worst):
+        # The push cannot go from where its object stands (no face's cone leads into the
+        # target): skeletons that move the object elsewhere first come next.
+        pushed = sorted(args & movable)
+        return Blocker(pushed[0], name) if len(pushed) == 1 else None
     found = _OVERLAP.search(worst) or _COLLISION.search(worst)
     if found is None:
         return None

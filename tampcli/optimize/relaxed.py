@@ -86,17 +86,25 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
         out, solved, _ = solve_apart(builder.qp(), builder.aparts, budget)
         best, proved, qps = min(best, out.value), proved and out.proved, qps + solved
     kind = "proved" if proved else "heuristic"
-    why = _why_infeasible(problem, budget, assignments != [{}]) if math.isinf(best) else None
+    pushes = [problem.steps[i].name for i, _ in choices]
+    why = _why_infeasible(problem, budget, pushes) if math.isinf(best) else None
     return RelaxedBound(float(max(best, 0.0)), kind, qps, why)
 
 
-def _why_infeasible(problem, budget: int, pushes: bool) -> str | None:
-    """The part of the relaxation that makes it infeasible, when one alone does."""
+def _why_infeasible(problem, budget: int, pushes: list[str]) -> str | None:
+    """The part of the relaxation that makes it infeasible, when one alone does.
+    `pushes`: the names of the pushing steps (with faces to choose)."""
     hull = Builder(problem, {})  # no face chosen: no friction cone
     if math.isinf(solve_convex_qp(hull.qp()).value):
         return None
     if pushes and not math.isinf(solve_apart(hull.qp(), hull.aparts, budget)[0].value):
-        return "no pushed face's friction cone leads into the target (a drag or a pull)"
+        cone = "no pushed face's friction cone leads into the target (a drag or a pull)"
+        if pushes[-1] == problem.steps[-1].name:
+            # The last step of a shortest infeasible prefix is the push that fails: worded
+            # as the NLPs word it, the skeleton source learns that its object must be
+            # moved before it (from where it stands, no face leads there).
+            return f"{pushes[-1]}: motion not into the pushed face ({cone})"
+        return cone
     alone = next((p for p in hull.aparts if blocks_alone(p, hull.box)), None)
     if alone is not None:
         # Worded as the NLPs word an overlap: the skeleton source learns the blocker.

@@ -27,3 +27,16 @@ def test_fixed_bodies_and_the_actions_own_objects_are_no_blockers():
                       MOVABLE) is None
     assert blocker_of("(place a goal): footprint outside region goal by 1 cm", MOVABLE) is None
     assert blocker_of(None, MOVABLE) is None
+
+
+def test_a_push_that_cannot_go_from_where_its_object_stands_blames_the_object():
+    """No face's cone leads into the target from the object's pose: the skeletons
+    that move it elsewhere before that push come next (gen1's planar instances)."""
+    worst = ("(push a home goal bench): motion not into the pushed face (a drag) by 7.1 cm")
+    assert blocker_of(worst, MOVABLE) == Blocker("a", "(push a home goal bench)")
+    relaxed = ("(push b home goal bench): motion not into the pushed face (no pushed face's "
+               "friction cone leads into the target (a drag or a pull))")
+    assert blocker_of(relaxed, MOVABLE) == Blocker("b", "(push b home goal bench)")
+    # Two movable arguments: which one is pushed is not known from the name alone.
+    assert blocker_of("(push a b goal): motion not into the pushed face by 1 cm",
+                      MOVABLE) is None

@@ -122,6 +122,8 @@ def test_the_seed_push_is_proved_infeasible_by_the_friction_cone(planar):
     assert out.kind == "proved" and math.isinf(out.value)
     assert out.qps == 4  # one QP per face
     assert "friction cone" in out.why
+    # The failing push named, as the NLPs name it: the skeleton source learns from it.
+    assert out.why.startswith("(push o start goal floor): motion not into the pushed face")
     assert solve(problem, "keyframes").status == "infeasible"
 
 
