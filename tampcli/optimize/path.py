@@ -271,14 +271,27 @@ def via_points(problem: TrajectoryProblem, q_a, q_b, T: int, held_height: float,
     for t, out in ((ta, out_a), (tb, out_b)):
         up = t.copy()
         up[2, 3] = top
-        q, res = world.ik(up, seed=out[-1], rng_seed=int(rng.integers(1 << 30)))
-        ups.append([q] if res < 1e-3 else [])
+        ups.append(_lifted(world, up, out, int(rng.integers(1 << 30))))
     path = np.array([*out_a, *ups[0], *ups[1], *out_b[::-1]])
     seg = np.linalg.norm(np.diff(path, axis=0), axis=1) + 1e-9
     cum = np.concatenate([[0.0], np.cumsum(seg)]) / np.sum(seg)
     taus = np.arange(1, T) / T
     return np.array([[np.interp(t, cum, path[:, j]) for j in range(path.shape[1])]
                      for t in taus])
+
+
+def _lifted(world, up: np.ndarray, out: tuple, rng_seed: int) -> list[np.ndarray]:
+    """[IK of the lifted pose `up`] ([] where none is found) from the last of `out`
+    (the keyframe, then its way out). After a way out, the arm near a joint limit,
+    the pose or else the position alone from there, before random seeds: their
+    answer can swing the first joint round (blind8 p03: 5 rad, through the arm's
+    own links on the way)."""
+    tries = [dict(restarts=0), dict(restarts=0, position_only=True)] if len(out) > 1 else []
+    for kwargs in [*tries, dict(rng_seed=rng_seed)]:
+        q, res = world.ik(up, seed=out[-1], **kwargs)
+        if res < 1e-3:
+            return [q]
+    return []
 
 
 def _planar_detour(problem, q_a, q_b, T, moved) -> np.ndarray:
