@@ -31,6 +31,10 @@ STEEP = 0.3  # an approach with less horizontal part than this points down: out 
 HEADROOM = 0.5  # m: a body's underside this far above the tool or more is not over it
 MAX_EXIT = 0.4  # m: the way out goes this far back at most
 HAND_REACH = 0.1  # m: how far the hand reaches around the tool origin (fingers, knuckles)
+# m: the tool this close to under a body's footprint has the hand under it (the
+# fingers reach past it); further out a lift is clear (a puck set down 15 cm in
+# front of a shelf's board, 24 cm under it, is no hand in the shelf)
+UNDER = 0.03
 IK_TOLERANCE = 1e-3
 
 
@@ -82,7 +86,8 @@ def way_out(problem, q, moved: dict, held) -> WayOut | None:
 def _over(problem, p: np.ndarray, back: np.ndarray, moved: dict, held, reach: float
           ) -> dict[str, float]:
     """name -> distance along `back` from the tool point p to where the body's footprint,
-    grown by `reach`, is left, for each body above p whose grown footprint holds p."""
+    grown by `reach`, is left, for each body above p whose footprint, grown by UNDER,
+    holds p."""
     out = {}
     for name, info in problem.bodies.items():
         if held is not None and name == held.name:
@@ -97,12 +102,15 @@ def _over(problem, p: np.ndarray, back: np.ndarray, moved: dict, held, reach: fl
             continue
         d = p[:2] - centre[:2]
         if info.disk:
+            under = _disk_exit(d, back, info.half[0] + UNDER) is not None
             s = _disk_exit(d, back, info.half[0] + reach)
         else:
             c, sn = math.cos(yaw), math.sin(yaw)
             rot = np.array([[c, sn], [-sn, c]])  # world -> body frame
-            s = _box_exit(rot @ d, rot @ back, np.array(info.half[:2]) + reach)
-        if s is not None:
+            half = np.array(info.half[:2])
+            under = _box_exit(rot @ d, rot @ back, half + UNDER) is not None
+            s = _box_exit(rot @ d, rot @ back, half + reach)
+        if under:
             out[name] = s
     return out
 
