@@ -73,7 +73,7 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         x0 = line.x
     else:
         x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved,
-                        run.rng).reshape(-1)
+                        run.rng, ctx.held).reshape(-1)
     out = _solve_phase(run, ctx, T, checks, label, x0, opts.margin)
     if out.status == "solved" or time.perf_counter() > run.deadline:
         return out

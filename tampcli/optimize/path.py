@@ -32,6 +32,7 @@ from tampcli.optimize.layout import Layout, waypoint_block
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.skeleton import MotionPhase
 from tampcli.optimize.stages import Rows
+from tampcli.optimize.way_out import way_out
 
 STEP_RATIO = 2.0  # longest segment of a motion over its root-mean-square step
 
@@ -239,15 +240,25 @@ def sample_clearance(problem, m: MotionPhase, q_a, q_b, x, held, moved, checker,
 
 
 def via_points(problem: TrajectoryProblem, q_a, q_b, T: int, held_height: float, moved: dict,
-               rng) -> np.ndarray:
-    """(T-1, n) initial interior waypoints: lift, cross above the obstacles, descend."""
+               rng, held: Held | None = None) -> np.ndarray:
+    """(T-1, n) initial interior waypoints: lift, cross above the obstacles, descend.
+
+    A keyframe with the hand under something is left (or reached) first along its
+    approach, backing out from under it (way_out): straight up would run through it.
+    `held`: what the hand carries (its size decides how far out is clear)."""
     world = problem.world
     q_a, q_b = np.asarray(q_a, float), np.asarray(q_b, float)
     if problem.planar:
         return _planar_detour(problem, q_a, q_b, T, moved)
-    ta, tb = world.tool_pose(q_a), world.tool_pose(q_b)
-    lo = np.minimum(ta[:2, 3], tb[:2, 3]) - 0.1
-    hi = np.maximum(ta[:2, 3], tb[:2, 3]) + 0.1
+    ends = []
+    for q in (q_a, q_b):
+        out = way_out(problem, q, moved, held)
+        ends.append((world.tool_pose(q), (q,)) if out is None
+                    else (out.tool, (q, *out.configs)))
+    (ta, out_a), (tb, out_b) = ends
+    near = [world.tool_pose(q)[:2, 3] for q in (q_a, q_b)] + [ta[:2, 3], tb[:2, 3]]
+    lo = np.min(near, axis=0) - 0.1
+    hi = np.max(near, axis=0) + 0.1
     top = max(ta[2, 3], tb[2, 3])
     for name, info in problem.bodies.items():
         x, y = (moved[name][:2, 3] if name in moved else info.pose[:2])
@@ -256,20 +267,31 @@ def via_points(problem: TrajectoryProblem, q_a, q_b, T: int, held_height: float,
             z = (moved[name][2, 3] if name in moved else info.pose[2]) + info.half[2]
             if z < top + 0.6:
                 top = max(top, z + held_height + 0.08)
-    path = [q_a]
-    for t, q_seed in ((ta, q_a), (tb, q_b)):
+    ups = []
+    for t, out in ((ta, out_a), (tb, out_b)):
         up = t.copy()
         up[2, 3] = top
-        q, res = world.ik(up, seed=q_seed, rng_seed=int(rng.integers(1 << 30)))
-        if res < 1e-3:
-            path.append(q)
-    path.append(q_b)
-    path = np.array(path)
+        ups.append(_lifted(world, up, out, int(rng.integers(1 << 30))))
+    path = np.array([*out_a, *ups[0], *ups[1], *out_b[::-1]])
     seg = np.linalg.norm(np.diff(path, axis=0), axis=1) + 1e-9
     cum = np.concatenate([[0.0], np.cumsum(seg)]) / np.sum(seg)
     taus = np.arange(1, T) / T
     return np.array([[np.interp(t, cum, path[:, j]) for j in range(path.shape[1])]
                      for t in taus])
+
+
+def _lifted(world, up: np.ndarray, out: tuple, rng_seed: int) -> list[np.ndarray]:
+    """[IK of the lifted pose `up`] ([] where none is found) from the last of `out`
+    (the keyframe, then its way out). After a way out, the arm near a joint limit,
+    the pose or else the position alone from there, before random seeds: their
+    answer can swing the first joint round (blind8 p03: 5 rad, through the arm's
+    own links on the way)."""
+    tries = [dict(restarts=0), dict(restarts=0, position_only=True)] if len(out) > 1 else []
+    for kwargs in [*tries, dict(rng_seed=rng_seed)]:
+        q, res = world.ik(up, seed=out[-1], **kwargs)
+        if res < 1e-3:
+            return [q]
+    return []
 
 
 def _planar_detour(problem, q_a, q_b, T, moved) -> np.ndarray:
