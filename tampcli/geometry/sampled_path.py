@@ -37,6 +37,14 @@ import numpy as np
 # Validity checks of RRT-Connect's first run before a restart (about 0.25 s at the
 # 4,000 checks a second measured on blind3 p03 and blind7 p03).
 FIRST_SLICE = 1000
+# OMPL checks an edge every `resolution` of the space's extent: 0.23 rad on the xArm6's
+# 23 rad, up to 13 cm of tool motion, so an edge may pass through a 4 cm flask or a
+# 1 cm wall between two checks (blind8 p03: two sampled approaches of three ended with
+# a finger 1.5 and 2.2 cm inside the flask, which the NLP cannot pull back round it).
+# A path found is checked again FINE times finer; where an edge fails, the query runs
+# again REFINE times finer with the budget left.
+FINE = 10
+REFINE = 4
 # m: how much deeper than at the nearer end a pair may be near an end (numerical noise
 # on a touching contact; it may not cut through what the motion starts or ends at).
 CONTACT_DEPTH = 2e-4
@@ -110,35 +118,25 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
         return ob.PlannerTerminationCondition(
             lambda: made[0] >= limit or time.perf_counter() > deadline)
 
+    lo = np.minimum(lower, np.minimum(q_start, q_goal))
+    hi = np.maximum(upper, np.maximum(q_start, q_goal))
+    fine = options.resolution / FINE * float(np.linalg.norm(hi - lo))
     previous = ou.getLogLevel()
     ou.setLogLevel(ou.LOG_NONE)
+    path = None
     try:
         ou.RNG.setSeed(max(1, int(options.seed) % (1 << 31)))  # OMPL refuses seed 0
-        space = ob.RealVectorStateSpace(n)
-        bounds = ob.RealVectorBounds(n)
-        for i in range(n):
-            bounds.setLow(i, float(min(lower[i], q_start[i], q_goal[i])))
-            bounds.setHigh(i, float(max(upper[i], q_start[i], q_goal[i])))
-        space.setBounds(bounds)
-        setup = og.SimpleSetup(space)
-        setup.setStateValidityChecker(lambda s: valid(np.fromiter((s[i] for i in range(n)),
-                                                                  float, n)))
-        info = setup.getSpaceInformation()
-        info.setStateValidityCheckingResolution(options.resolution)
-        start, goal = space.allocState(), space.allocState()
-        for i in range(n):
-            start[i], goal[i] = float(q_start[i]), float(q_goal[i])
-        setup.setStartAndGoalStates(start, goal)
-        setup.setPlanner(og.RRTConnect(info))
-        path = None
-        if _solve_with_restarts(setup, made, options.checks, spent, deadline):
-            if options.simplify_checks > 0:
-                setup.simplifySolution(spent(made[0] + options.simplify_checks))
-            found = setup.getSolutionPath()
-            path = np.array([[found.getState(k)[i] for i in range(n)]
-                             for k in range(found.getStateCount())])
-            del found
-        del setup, info, start, goal, space, bounds
+        limit = made[0] + options.checks
+        for resolution in (options.resolution, options.resolution / REFINE):
+            if made[0] >= limit:
+                break
+            found = _query(ob, og, n, lo, hi, q_start, q_goal, valid, resolution, made,
+                           limit - made[0], options.simplify_checks, spent, deadline)
+            if found is None:
+                break
+            path = found
+            if _edges_valid(path, valid, fine):
+                break
     finally:
         gc.collect()
         ou.setLogLevel(previous)
@@ -146,6 +144,48 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
         return None
     path[0], path[-1] = q_start, q_goal
     return path
+
+
+def _query(ob, og, n, lo, hi, q_start, q_goal, valid, resolution, made, checks,
+           simplify_checks, spent, deadline):
+    """One RRT-Connect query (with restarts) and its shortcutting at `resolution`: the
+    path (K, n), or None; every OMPL object released before returning."""
+    space = ob.RealVectorStateSpace(n)
+    bounds = ob.RealVectorBounds(n)
+    for i in range(n):
+        bounds.setLow(i, float(lo[i]))
+        bounds.setHigh(i, float(hi[i]))
+    space.setBounds(bounds)
+    setup = og.SimpleSetup(space)
+    setup.setStateValidityChecker(lambda s: valid(np.fromiter((s[i] for i in range(n)),
+                                                              float, n)))
+    info = setup.getSpaceInformation()
+    info.setStateValidityCheckingResolution(resolution)
+    start, goal = space.allocState(), space.allocState()
+    for i in range(n):
+        start[i], goal[i] = float(q_start[i]), float(q_goal[i])
+    setup.setStartAndGoalStates(start, goal)
+    setup.setPlanner(og.RRTConnect(info))
+    path = None
+    if _solve_with_restarts(setup, made, checks, spent, deadline):
+        if simplify_checks > 0:
+            setup.simplifySolution(spent(made[0] + simplify_checks))
+        found = setup.getSolutionPath()
+        path = np.array([[found.getState(k)[i] for i in range(n)]
+                         for k in range(found.getStateCount())])
+        del found
+    del setup, info, start, goal, space, bounds
+    return path
+
+
+def _edges_valid(path: np.ndarray, valid, step: float) -> bool:
+    """Every edge of `path` valid at points `step` apart (joint-space distance)."""
+    for a, b in zip(path[:-1], path[1:], strict=True):
+        count = int(np.ceil(np.linalg.norm(b - a) / step))
+        for s in np.arange(1, count) / max(count, 1):
+            if not valid(a + s * (b - a)):
+                return False
+    return True
 
 
 def _solve_with_restarts(setup, made: list, checks: int, spent, deadline: float) -> bool:

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from tampcli.geometry.collision import CollisionChecker
-from tampcli.geometry.sampled_path import SamplingOptions, resample, sampled_path
+from tampcli.geometry.sampled_path import FINE, SamplingOptions, resample, sampled_path
 from tampcli.geometry.scene import RobotSpec, Scene
 from tampcli.geometry.world import World
 
@@ -17,13 +17,13 @@ from .worlds import IDENTITY, box
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _corridor_scene(gap: float) -> Scene:
+def _corridor_scene(gap: float, thickness: float = 0.1) -> Scene:
     """A wall across the floor at x = 0 with one slot of width `gap` at y = 0.3."""
     lo, hi = 0.3 - 0.5 * gap, 0.3 + 0.5 * gap  # the wall spans the floor, y -1 .. 1
     bodies = (
         box("floor", (2.0, 2.0, 0.02), (0.0, 0.0, -0.01)),
-        box("wall_low", (0.1, lo + 1.0, 0.1), (0.0, (lo - 1.0) / 2, 0.05)),
-        box("wall_high", (0.1, 1.0 - hi, 0.1), (0.0, (1.0 + hi) / 2, 0.05)),
+        box("wall_low", (thickness, lo + 1.0, 0.1), (0.0, (lo - 1.0) / 2, 0.05)),
+        box("wall_high", (thickness, 1.0 - hi, 0.1), (0.0, (1.0 + hi) / 2, 0.05)),
     )
     return Scene(None, RobotSpec("planar", base=(-0.5, -0.5, 0.025) + IDENTITY, radius=0.05),
                  bodies)
@@ -123,6 +123,24 @@ def test_a_deadline_passed_stops_the_query_at_once():
         assert sampled_path(counting, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
                             options=options) is None
         assert counting.asked <= 2 + 200
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3, 4, 5])
+def test_no_edge_passes_through_a_wall_thinner_than_the_check_step(seed):
+    """OMPL checks an edge every `resolution` of the extent (here 11 cm on a 2.2 m
+    floor, against a 2 cm disk-and-wall overlap band): the path found is checked again
+    ten times finer, and the query runs again finer where an edge fails."""
+    with World(_corridor_scene(0.2, thickness=0.004)) as world:
+        checker = CollisionChecker(world)
+        options = SamplingOptions(checks=200_000, resolution=0.05, seed=seed,
+                                  endpoint_slack=0.0)
+        path = sampled_path(checker, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
+                            options=options)
+        assert path is not None
+        # Between two points checked s apart, a distance (1-Lipschitz) dips at most s / 2;
+        # through the wall it would be the disk's whole radius.
+        step = options.resolution / FINE * float(np.linalg.norm(world.upper - world.lower))
+        assert _fine_min_distance(checker, path) >= -step / 2
 
 
 def test_resample_spaces_waypoints_evenly_along_the_path():
