@@ -1,0 +1,155 @@
+"""The vertical approach of a carry among close neighbours: the object comes straight
+down onto its support at a place.
+
+A carry's segments are checked for collisions at a few points each, and near a
+keyframe the margin to what stands closer than the margin there is half that
+distance (path.MotionMargins). A last segment that brings the object down and
+sideways at once can then pass through a thin rim or a neighbour between two
+sample points (measured: blind8 p07, a cylinder coming down 15 cm and 10 cm
+across in one segment, through a tray's rim 3.6 mm deep at s = 0.92, clear at
+s = 0.75 and 1.0; blind8 p06, a box closing 10 mm on its neighbour in the last
+segment, to 1 mm from it). Where something other than the support stands nearer
+than the margin at the keyframe, the waypoint next to it holds the object right
+above its resting pose, turned as there, high enough for its bottom to clear the
+tops of those neighbours, and so do the waypoints before it, RUNG apart: the last
+segments only move it vertically, and the neighbours' sides cannot be crossed. The
+motion gets a segment more per rung, so the rest of it keeps its waypoints.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from tampcli.optimize.collide import Held, contact_key, held_spec
+from tampcli.optimize.expr import Label, PoseX, RowSet
+from tampcli.optimize.grips import skew
+from tampcli.optimize.layout import waypoint_block
+
+CLEAR = 0.01  # m: the object's bottom this far over the tops of its close neighbours
+MAX_HEIGHT = 0.08  # m: the highest approach; lower ones are tried where it is blocked
+RUNG = 0.02  # m: the most the object comes down between two waypoints of the approach
+IK_TOLERANCE = 1e-4  # IK residual of an approach configuration
+SLACK = 1e-4  # m: how much nearer than at the place a rung may come to a neighbour
+
+
+@dataclass(frozen=True)
+class Approach:
+    """The waypoints before a place that hold the object right above its resting pose:
+    `targets[j]` the held object's pose (4x4) at the (j + 1)-th waypoint before the
+    keyframe, `qs[j]` a configuration reaching it. Rungs RUNG apart at most keep the
+    joint-space segments between them straight to a fraction of a millimetre (a
+    single 7.5 cm one bowed 1 mm into a neighbour 1 mm away: blind8 p06)."""
+
+    targets: tuple[np.ndarray, ...]
+    qs: tuple[np.ndarray, ...]
+
+    @property
+    def rungs(self) -> int:
+        return len(self.targets)
+
+
+def place_approach(problem, m, q_b, held: Held | None, moved: dict, checker
+                   ) -> Approach | None:
+    """The vertical approach of motion m (an arm's carry into a place) when something
+    other than the support is nearer than the margin at the place; None otherwise.
+    Its height: the neighbours' tops plus CLEAR over the object's bottom, within
+    [margin + CLEAR / 2, MAX_HEIGHT]; where IK cannot reach a rung or one comes nearer
+    than the tight margin to anything (or than the place to its neighbours, less
+    SLACK), halved down to that least (then None)."""
+    if held is None or problem.planar or m.pushes or m.attached is None or \
+            not m.enter_contact:
+        return None
+    world, opts = problem.world, problem.options
+    q_b = np.asarray(q_b, dtype=float)
+    tool = world.tool_pose(q_b)
+    rest = tool @ held.grasp
+    ignore = frozenset(m.sliding)
+    near = [c for c in checker.distances(q_b, moved, held_spec(held), ignore, opts.margin,
+                                         static=False)
+            if c.distance < opts.margin and contact_key(c) not in m.enter_contact]
+    if not near:
+        return None
+    # A rung beside a wall is as near it as the place is (p07's: 1 mm, the tight margin).
+    clear = min(opts.tight_margin, *(c.distance for c in near)) - SLACK
+    bottom = rest[2, 3] - problem.bodies[held.name].half[2]
+    tops = [t for t in (_top(problem, contact_key(c), moved) for c in near) if t is not None]
+    least = opts.margin + CLEAR / 2
+    height = min(max(max(tops, default=bottom) - bottom + CLEAR, least), MAX_HEIGHT)
+    while True:
+        found = _rungs(problem, q_b, tool, rest, height, held, moved, ignore, clear)
+        if found is not None or height <= least:
+            return found
+        height = max(height / 2, least)
+
+
+def _rungs(problem, q_b, tool, rest, height: float, held: Held, moved, ignore,
+           clear: float):
+    world, checker, opts = problem.world, problem.checker, problem.options
+    n = max(1, int(np.ceil(height / RUNG - 1e-9)))
+    targets, qs, seed = [], [], q_b
+    for j in range(1, n + 1):
+        rise = height * j / n
+        up = tool.copy()
+        up[2, 3] += rise
+        q, residual = world.ik(up, seed=seed, restarts=0)
+        if residual > IK_TOLERANCE or checker.min_distance(
+                q, moved, held_spec(held), ignore, static=False,
+                horizon=opts.margin) < clear:
+            return None
+        target = rest.copy()
+        target[2, 3] += rise
+        targets.append(target)
+        qs.append(np.asarray(q, dtype=float))
+        seed = q
+    return Approach(tuple(targets), tuple(qs))
+
+
+def _top(problem, key: str, moved) -> float | None:
+    """The top (z) of a body named by a contact key, None for "self"."""
+    info = problem.bodies.get(key)
+    if info is None:
+        return None
+    z = moved[key][2, 3] if key in moved else info.pose[2]
+    return z + info.half[2]
+
+
+def approach_rows(eq: RowSet, label: str, approach: Approach, kin, qs, held: Held) -> None:
+    """The held object at each rung's target at its waypoint (qs: every waypoint,
+    keyframes included): position, and axes as the target's (z parallel, x across
+    the target's y). Rungs beyond the first waypoint are left out."""
+    T = len(qs) - 1
+    for j, target in enumerate(approach.targets, start=1):
+        i = T - j
+        if i < 1:
+            break
+        H = _held_at(kin.frame(qs[i]), held.grasp, waypoint_block(i))
+        tx, ty = target[:3, 0], target[:3, 1]
+        g = np.zeros((6, 12))
+        g[0:3, 0:3] = np.eye(3)
+        g[3, 9:12], g[4, 9:12], g[5, 3:6] = tx, ty, ty
+        values = np.concatenate([H.pos - target[:3, 3], [H.az @ tx, H.az @ ty, H.ax @ ty]])
+        eq.add(values, H.through(g), Label(label, "held object off its vertical approach"))
+
+
+def _held_at(frame, grasp: np.ndarray, block: str) -> PoseX:
+    """The held object's pose from the tool frame and the grasp as carried (Held.grasp:
+    the collision model's and the replay's; a cylinder's grip yaw may differ from it),
+    with d / d q."""
+    rc = frame.R @ grasp[:3, 3]
+    axes = frame.R @ grasp[:3, :3]
+    jac = [frame.Jp - skew(rc) @ frame.Jw] + [-skew(axes[:, k]) @ frame.Jw for k in range(3)]
+    v = np.concatenate([frame.p + rc, axes[:, 0], axes[:, 1], axes[:, 2]])
+    return PoseX(v, {block: np.vstack(jac)})
+
+
+def seeded(x0, approach: Approach | None, T: int, n: int) -> np.ndarray:
+    """x0 (the (T - 1) * n interior waypoints) with the approach's waypoints at its
+    rungs' configurations."""
+    x = np.array(x0, dtype=float).reshape(T - 1, n)
+    if approach is not None:
+        for j, q in enumerate(approach.qs, start=1):
+            if T - j >= 1:
+                x[T - j - 1] = q
+    return x.reshape(-1)
