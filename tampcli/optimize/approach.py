@@ -9,36 +9,36 @@ sample points (measured: blind8 p07, a cylinder coming down 15 cm and 10 cm
 across in one segment, through a tray's rim 3.6 mm deep at s = 0.92, clear at
 s = 0.75 and 1.0; blind8 p06, a box closing 10 mm on its neighbour in the last
 segment, to 1 mm from it). Where something other than the support stands nearer
-than the margin at the keyframe, the waypoint next to it holds the object right
-above its resting pose, turned as there, high enough for its bottom to clear the
-tops of those neighbours, and so do the waypoints before it, RUNG apart: the last
-segments only move it vertically, and the neighbours' sides cannot be crossed. The
-motion gets a segment more per rung, so the rest of it keeps its waypoints.
+than the margin at the keyframe, the carry ends with a fixed descent: rungs RUNG
+apart at most, each the object right above its resting pose, turned as there,
+the top one high enough for its bottom to clear the tops of those neighbours.
+The path NLP solves the carry to the top rung; the descent is appended to it.
+(Held as equality rows of the path NLP instead, the rungs stalled SLSQP a
+fraction of a millimetre short of feasible: blind8 p06 lost every skeleton.)
 """
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
 
 from tampcli.optimize.collide import Held, contact_key, held_spec
-from tampcli.optimize.expr import Label, PoseX, RowSet
-from tampcli.optimize.grips import skew
-from tampcli.optimize.layout import waypoint_block
 
 CLEAR = 0.01  # m: the object's bottom this far over the tops of its close neighbours
 MAX_HEIGHT = 0.08  # m: the highest approach; lower ones are tried where it is blocked
 RUNG = 0.02  # m: the most the object comes down between two waypoints of the approach
 IK_TOLERANCE = 1e-4  # IK residual of an approach configuration
-SLACK = 1e-4  # m: how much nearer than at the place a rung may come to a neighbour
+SLACK = 5e-4  # m: how much nearer than at the place a rung may come to a neighbour
+CHECKS = 3  # collision checks between two rungs
 
 
 @dataclass(frozen=True)
 class Approach:
     """The waypoints before a place that hold the object right above its resting pose:
     `targets[j]` the held object's pose (4x4) at the (j + 1)-th waypoint before the
-    keyframe, `qs[j]` a configuration reaching it. Rungs RUNG apart at most keep the
+    keyframe, `qs[j]` the configuration there. Rungs RUNG apart at most keep the
     joint-space segments between them straight to a fraction of a millimetre (a
     single 7.5 cm one bowed 1 mm into a neighbour 1 mm away: blind8 p06)."""
 
@@ -57,7 +57,8 @@ def place_approach(problem, m, q_b, held: Held | None, moved: dict, checker
     Its height: the neighbours' tops plus CLEAR over the object's bottom, within
     [margin + CLEAR / 2, MAX_HEIGHT]; where IK cannot reach a rung or one comes nearer
     than the tight margin to anything (or than the place to its neighbours, less
-    SLACK), halved down to that least (then None)."""
+    SLACK), at a rung or at CHECKS points between two, halved down to that least
+    (then None)."""
     if held is None or problem.planar or m.pushes or m.attached is None or \
             not m.enter_contact:
         return None
@@ -89,14 +90,19 @@ def _rungs(problem, q_b, tool, rest, height: float, held: Held, moved, ignore,
     world, checker, opts = problem.world, problem.checker, problem.options
     n = max(1, int(np.ceil(height / RUNG - 1e-9)))
     targets, qs, seed = [], [], q_b
+
+    def clear_at(q) -> bool:
+        return checker.min_distance(q, moved, held_spec(held), ignore, static=False,
+                                    horizon=opts.margin) >= clear
+
     for j in range(1, n + 1):
         rise = height * j / n
         up = tool.copy()
         up[2, 3] += rise
         q, residual = world.ik(up, seed=seed, restarts=0)
-        if residual > IK_TOLERANCE or checker.min_distance(
-                q, moved, held_spec(held), ignore, static=False,
-                horizon=opts.margin) < clear:
+        q = np.asarray(q, dtype=float)
+        between = [(1 - s) * seed + s * q for s in np.arange(1, CHECKS + 1) / (CHECKS + 1)]
+        if residual > IK_TOLERANCE or not all(clear_at(p) for p in [q, *between]):
             return None
         target = rest.copy()
         target[2, 3] += rise
@@ -115,41 +121,14 @@ def _top(problem, key: str, moved) -> float | None:
     return z + info.half[2]
 
 
-def approach_rows(eq: RowSet, label: str, approach: Approach, kin, qs, held: Held) -> None:
-    """The held object at each rung's target at its waypoint (qs: every waypoint,
-    keyframes included): position, and axes as the target's (z parallel, x across
-    the target's y). Rungs beyond the first waypoint are left out."""
-    T = len(qs) - 1
-    for j, target in enumerate(approach.targets, start=1):
-        i = T - j
-        if i < 1:
-            break
-        H = _held_at(kin.frame(qs[i]), held.grasp, waypoint_block(i))
-        tx, ty = target[:3, 0], target[:3, 1]
-        g = np.zeros((6, 12))
-        g[0:3, 0:3] = np.eye(3)
-        g[3, 9:12], g[4, 9:12], g[5, 3:6] = tx, ty, ty
-        values = np.concatenate([H.pos - target[:3, 3], [H.az @ tx, H.az @ ty, H.ax @ ty]])
-        eq.add(values, H.through(g), Label(label, "held object off its vertical approach"))
-
-
-def _held_at(frame, grasp: np.ndarray, block: str) -> PoseX:
-    """The held object's pose from the tool frame and the grasp as carried (Held.grasp:
-    the collision model's and the replay's; a cylinder's grip yaw may differ from it),
-    with d / d q."""
-    rc = frame.R @ grasp[:3, 3]
-    axes = frame.R @ grasp[:3, :3]
-    jac = [frame.Jp - skew(rc) @ frame.Jw] + [-skew(axes[:, k]) @ frame.Jw for k in range(3)]
-    v = np.concatenate([frame.p + rc, axes[:, 0], axes[:, 1], axes[:, 2]])
-    return PoseX(v, {block: np.vstack(jac)})
-
-
-def seeded(x0, approach: Approach | None, T: int, n: int) -> np.ndarray:
-    """x0 (the (T - 1) * n interior waypoints) with the approach's waypoints at its
-    rungs' configurations."""
-    x = np.array(x0, dtype=float).reshape(T - 1, n)
-    if approach is not None:
-        for j, q in enumerate(approach.qs, start=1):
-            if T - j >= 1:
-                x[T - j - 1] = q
-    return x.reshape(-1)
+def descended(out, approach: Approach, q_b, scale: float):
+    """The outcome `out` of the carry to the top rung (interior waypoints x, cost
+    scale * sum |dq|^2) continued down the rungs to q_b: the top rung and the rungs
+    below it become waypoints, their segments join the cost."""
+    n = len(q_b)
+    x = np.asarray(out.x, dtype=float).reshape(-1, n)
+    down = list(reversed(approach.qs))  # top rung first
+    path = np.vstack([*down, np.asarray(q_b, dtype=float)])
+    steps = np.diff(path, axis=0)
+    return dataclasses.replace(out, x=np.vstack([x, *down]).reshape(-1),
+                               cost=out.cost + scale * float(np.sum(steps * steps)))

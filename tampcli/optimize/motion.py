@@ -14,7 +14,7 @@ import numpy as np
 
 from tampcli.geometry.sampled_path import resample, sampled_path
 from tampcli.optimize import relocate
-from tampcli.optimize.approach import place_approach, seeded
+from tampcli.optimize.approach import descended, place_approach
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
 from tampcli.optimize.path import (
@@ -36,6 +36,26 @@ MAX_SEGMENTS_RATIO = 4  # a motion's segments at most, as a multiple of `waypoin
 
 
 def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
+    """One motion's path (`_solve_motion`); a carry into a place among close neighbours
+    solved to the top of its vertical descent (approach.py), the descent appended.
+    `warm`, as this returns it, the descent included."""
+    problem = run.problem
+    approach = place_approach(problem, problem.motions[ctx.index], ctx.q_b, ctx.held,
+                              ctx.moved, run.checker)
+    if approach is None:
+        return _solve_motion(run, ctx, T, checks, label, warm)
+    if warm is not None:
+        warm = np.asarray(warm).reshape(-1, problem.n)[:-approach.rungs]
+    top = dataclasses.replace(ctx, q_b=approach.qs[-1])
+    out = _solve_motion(run, top, T, checks, label, warm if warm is not None and len(warm)
+                        else None)
+    if out.status != "solved":
+        return out
+    segments = len(out.x) // problem.n + 1
+    return descended(out, approach, ctx.q_b, segments / problem.options.waypoints)
+
+
+def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """One motion's path NLP under the margin schedule.
 
     From the via-point start with the options' margin; where that fails, from
@@ -51,11 +71,7 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """
     problem = run.problem
     opts = problem.options
-    m = problem.motions[ctx.index]
-    approach = place_approach(problem, m, ctx.q_b, ctx.held, ctx.moved, run.checker)
-    if approach is not None:
-        T += approach.rungs  # the approach's segments come on top of the motion's own
-    line, line_violation = _straight_line(run, ctx, T, checks, label, approach)
+    line, line_violation = _straight_line(run, ctx, T, checks, label)
     if line_violation <= FEASIBILITY:
         return line
     held_height = 0.0
@@ -64,8 +80,7 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     if warm is not None:
         warm = np.asarray(warm)
         for margin in (opts.margin, opts.tight_margin):
-            out = _solve_phase(run, ctx, len(warm) + 1, checks, label, warm.reshape(-1), margin,
-                               approach)
+            out = _solve_phase(run, ctx, len(warm) + 1, checks, label, warm.reshape(-1), margin)
             if out.status == "solved" or time.perf_counter() > run.deadline:
                 return out
     if problem.motions[ctx.index].pushes:
@@ -80,7 +95,7 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     else:
         x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved,
                         run.rng).reshape(-1)
-    out = _solve_phase(run, ctx, T, checks, label, x0, opts.margin, approach)
+    out = _solve_phase(run, ctx, T, checks, label, x0, opts.margin)
     if out.status == "solved" or time.perf_counter() > run.deadline:
         return out
     if problem.motions[ctx.index].pushes:
@@ -105,10 +120,10 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         sampled = resample(sampled, T + 1)[1:-1].reshape(-1)
         tries = [(sampled, opts.margin), (sampled, opts.tight_margin)]
     for start, margin in tries:
-        out = _solve_phase(run, ctx, T, checks, label, start, margin, approach)
+        out = _solve_phase(run, ctx, T, checks, label, start, margin)
         if out.status == "solved" or time.perf_counter() > run.deadline:
             return out
-    return _clear_anyway(run, ctx, T, checks, label, out, approach)
+    return _clear_anyway(run, ctx, T, checks, label, out)
 
 
 def segments_for(path: np.ndarray, T: int) -> int:
@@ -121,7 +136,7 @@ def segments_for(path: np.ndarray, T: int) -> int:
     return max(edges, min(2 * edges, MAX_SEGMENTS_RATIO * T))
 
 
-def _straight_line(run, ctx, T: int, checks: int, label: str, approach=None):
+def _straight_line(run, ctx, T: int, checks: int, label: str):
     """(outcome, violation) of the straight joint-space line at even steps, with the
     margin, at every sample point. Solved when feasible: its cost, sum |dq|^2, is
     then the least any path has, |q_b - q_a|^2 / T (Cauchy-Schwarz), which the NLP
@@ -136,8 +151,7 @@ def _straight_line(run, ctx, T: int, checks: int, label: str, approach=None):
     own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, margin,
                          min(margin, problem.options.tight_margin))
     rows, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
-                                 run.checker, T, checks, ctx.rest_z, label, None, margin, own,
-                                 approach)
+                                 run.checker, T, checks, ctx.rest_z, label, None, margin, own)
     x = np.linspace(ctx.q_a, ctx.q_b, T + 1)[1:-1].reshape(-1)
     bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
                       strict=True))
@@ -170,7 +184,7 @@ def _straight_push(problem, q_a, q_b, T: int) -> np.ndarray:
     return np.array(out)
 
 
-def _clear_anyway(run, ctx, T: int, checks: int, label: str, out, approach=None):
+def _clear_anyway(run, ctx, T: int, checks: int, label: str, out):
     """`out` called solved when it meets every row at every sample point with no
     margin: SLSQP stalls a fraction of a millimetre short of the tight margin in a
     slot with millimetres to spare (robust-planar p04's plank), where the margin is
@@ -179,8 +193,7 @@ def _clear_anyway(run, ctx, T: int, checks: int, label: str, out, approach=None)
     m = problem.motions[ctx.index]
     own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, 0.0, 0.0)
     rows, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
-                                 run.checker, T, checks, ctx.rest_z, label, None, 0.0, own,
-                                 approach)
+                                 run.checker, T, checks, ctx.rest_z, label, None, 0.0, own)
     if nlp_feasible(rows, layout, out.x):
         return dataclasses.replace(out, status="solved", worst=None)
     return out
@@ -197,27 +210,24 @@ def _sampled_start(run, ctx, share: float):
     return path
 
 
-def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float, approach=None):
+def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
     """Coarse (waypoints only), then lazily add the points between waypoints that need it.
 
     The rows of a point between waypoints are added once it comes within
     LAZY_BAND of its limit (most never do: a collision query per point per
     evaluation is what the path NLP spends its time on); each round checks
     every point and adds the new offenders, so the answer is feasible at every
-    sample point or reported as not. `approach`: the carry's vertical approach to a place
-    (approach.py), its waypoints started at its rungs' configurations.
+    sample point or reported as not.
     """
     problem = run.problem
     m = problem.motions[ctx.index]
-    x0 = seeded(x0, approach, T, problem.n)
 
     own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, margin,
                          min(margin, problem.options.tight_margin))
 
     def rows(n_checks, keep=None):
         return phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
-                             run.checker, T, n_checks, ctx.rest_z, label, keep, margin, own,
-                             approach)
+                             run.checker, T, n_checks, ctx.rest_z, label, keep, margin, own)
 
     bounds = list(zip(np.tile(problem.world.lower, T - 1), np.tile(problem.world.upper, T - 1),
                       strict=True))

@@ -16,7 +16,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from tampcli.optimize import constraints as C
-from tampcli.optimize.approach import Approach, approach_rows
 from tampcli.optimize.bodies import REST_TOLERANCE
 from tampcli.optimize.collide import (
     TOUCH_SLACK,
@@ -61,7 +60,7 @@ def samples(T: int, checks: int):
 def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: Held | None,
                   moved: dict, kin, checker, T: int, checks: int, rest_z: float | None,
                   label: str, keep=None, margin: float | None = None,
-                  own: MotionMargins | None = None, approach: Approach | None = None):
+                  own: MotionMargins | None = None):
     """evaluate(x) -> Rows for motion `m` from q_a to q_b (both fixed), over T segments.
 
     Its cost is (T / waypoints) * sum |dq|^2: a motion given more segments than the
@@ -73,8 +72,7 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
     (all when None). `rest_z`: the height a pushed object keeps (None: nothing
     is pushed). `margin`: the clearance kept (the options' when None); `own`:
     the motion's margins for some keys (`motion_margins`; None: the contacts
-    entered or left touch, TOUCH_SLACK deep at most). `approach`: the carry's vertical
-    approach to a place (approach.place_approach), on the last of the T segments.
+    entered or left touch, TOUCH_SLACK deep at most).
     """
     opts = problem.options
     margin = opts.margin if margin is None else margin
@@ -115,8 +113,6 @@ def phase_rows_fn(problem: TrajectoryProblem, m: MotionPhase, q_a, q_b, held: He
             frame = kin.frame(q) if held is not None and held.t_block else None
             contact_rows(rows.ineq, label, found, wts, frame, held, poses, keys,
                          opts.activation, margin, keyed)
-        if approach is not None:
-            approach_rows(rows.eq, label, approach, kin, qs, held)
         if m.own:
             problem.step_of_keyframe(m.index).kind.path_rows(rows, label, problem, qs, held,
                                                              kin)
