@@ -10,9 +10,10 @@ import numpy as np
 import pytest
 
 from tampcli.geometry import transforms
-from tampcli.optimize.approach import CLEAR, RUNG, place_approach
+from tampcli.optimize.approach import CLEAR, RUNG, descended, place_approach
 from tampcli.optimize.collide import Held
 from tampcli.optimize.grips import TopGrip
+from tampcli.optimize.nlp import NlpOutcome
 
 from .helpers import ROOT, lowered_folder, ops
 
@@ -115,3 +116,20 @@ def test_a_can_set_down_between_rims_stands_in_the_physics_replay(cli, tmp_path)
     data = json.loads(run.out)
     assert run.code == 0, data["violations"]
     assert data["physics"]["objects"]["can"]["distance"] < 0.003
+
+
+def test_the_descent_is_appended_to_the_carry_and_to_its_cost(tmp_path):
+    with lowered_folder(tray_folder(tmp_path, play=0.01), "p", SKELETON) as problem:
+        m, q_b, held = _carry_into_tray(problem)
+        a = place_approach(problem, m, q_b, held, {}, problem.checker)
+        n = problem.n
+        free = np.vstack([problem.world.start + (a.qs[-1] - problem.world.start) * i / 4
+                          for i in range(1, 4)])
+        out = NlpOutcome(free.reshape(-1), "solved", 0.5, 0.0, None, 3, None, "")
+        done = descended(out, a, q_b, 2.0)
+        waypoints = done.x.reshape(-1, n)
+        # the free part's interior, then the rungs from the top down (q_b is the keyframe)
+        np.testing.assert_array_equal(waypoints[:3], free)
+        np.testing.assert_array_equal(waypoints[3:], np.array(a.qs[::-1]))
+        path = np.vstack([*a.qs[::-1], q_b])
+        assert done.cost == pytest.approx(0.5 + 2.0 * float(np.sum(np.diff(path, axis=0) ** 2)))
