@@ -1,5 +1,5 @@
-"""The vertical approach of a carry among close neighbours: the object comes straight
-down onto its support at a place.
+"""The vertical ends of a carry among close neighbours: the object comes straight down
+onto its support at a place, and goes straight up off it after a grasp.
 
 A carry's segments are checked for collisions at a few points each, and near a
 keyframe the margin to what stands closer than the margin there is half that
@@ -12,7 +12,9 @@ segment, to 1 mm from it). Where something other than the support stands nearer
 than the margin at the keyframe, the carry ends with a fixed descent: rungs RUNG
 apart at most, each the object right above its resting pose, turned as there,
 the top one high enough for its bottom to clear the tops of those neighbours.
-The path NLP solves the carry to the top rung; the descent is appended to it.
+The path NLP solves the carry to the top rung; the descent is appended to it. A
+carry that takes an object from among close neighbours starts with the same
+climb, mirrored.
 (Held as equality rows of the path NLP instead, the rungs stalled SLSQP a
 fraction of a millimetre short of feasible: blind8 p06 lost every skeleton.)
 """
@@ -36,9 +38,9 @@ CHECKS = 3  # collision checks between two rungs
 
 @dataclass(frozen=True)
 class Approach:
-    """The waypoints before a place that hold the object right above its resting pose:
-    `targets[j]` the held object's pose (4x4) at the (j + 1)-th waypoint before the
-    keyframe, `qs[j]` the configuration there. Rungs RUNG apart at most keep the
+    """The waypoints next to a place (or a grasp) that hold the object right above its
+    resting pose: `targets[j]` the held object's pose (4x4) at the (j + 1)-th
+    waypoint from the keyframe, `qs[j]` the configuration there. Rungs RUNG apart at most keep the
     joint-space segments between them straight to a fraction of a millimetre (a
     single 7.5 cm one bowed 1 mm into a neighbour 1 mm away: blind8 p06)."""
 
@@ -52,15 +54,27 @@ class Approach:
 
 def place_approach(problem, m, q_b, held: Held | None, moved: dict, checker
                    ) -> Approach | None:
-    """The vertical approach of motion m (an arm's carry into a place) when something
-    other than the support is nearer than the margin at the place; None otherwise.
+    """The vertical approach of motion m (an arm's carry) to the place at its end
+    (`vertical`)."""
+    return vertical(problem, m, q_b, held, moved, checker, m.enter_contact)
+
+
+def lift(problem, m, q_a, held: Held | None, moved: dict, checker) -> Approach | None:
+    """The vertical climb of motion m (an arm's carry) off the support it starts on
+    (`vertical`)."""
+    return vertical(problem, m, q_a, held, moved, checker, m.leave_contact)
+
+
+def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
+             ) -> Approach | None:
+    """The vertical end of carry m at keyframe q_b, where the object rests on
+    `contacts`, when something else is nearer than the margin there; None otherwise.
     Its height: the neighbours' tops plus CLEAR over the object's bottom, within
     [margin + CLEAR / 2, MAX_HEIGHT]; where IK cannot reach a rung or one comes nearer
     than the tight margin to anything (or than the place to its neighbours, less
     SLACK), at a rung or at CHECKS points between two, halved down to that least
     (then None)."""
-    if held is None or problem.planar or m.pushes or m.attached is None or \
-            not m.enter_contact:
+    if held is None or problem.planar or m.pushes or m.attached is None or not contacts:
         return None
     world, opts = problem.world, problem.options
     q_b = np.asarray(q_b, dtype=float)
@@ -69,7 +83,7 @@ def place_approach(problem, m, q_b, held: Held | None, moved: dict, checker
     ignore = frozenset(m.sliding)
     near = [c for c in checker.distances(q_b, moved, held_spec(held), ignore, opts.margin,
                                          static=False)
-            if c.distance < opts.margin and contact_key(c) not in m.enter_contact]
+            if c.distance < opts.margin and contact_key(c) not in contacts]
     if not near:
         return None
     # A rung beside a wall is as near it as the place is (p07's: 1 mm, the tight margin).
@@ -121,14 +135,18 @@ def _top(problem, key: str, moved) -> float | None:
     return z + info.half[2]
 
 
-def descended(out, approach: Approach, q_b, scale: float):
-    """The outcome `out` of the carry to the top rung (interior waypoints x, cost
-    scale * sum |dq|^2) continued down the rungs to q_b: the top rung and the rungs
-    below it become waypoints, their segments join the cost."""
+def joined(out, climb: Approach | None, descent: Approach | None, q_a, q_b,
+           scale: float):
+    """The outcome `out` of the carry between the top rungs continued down the
+    descent's rungs to q_b and preceded by the climb's from q_a: the rungs become
+    waypoints, their segments join the cost (scale * sum |dq|^2, as the NLP's)."""
     n = len(q_b)
-    x = np.asarray(out.x, dtype=float).reshape(-1, n)
-    down = list(reversed(approach.qs))  # top rung first
-    path = np.vstack([*down, np.asarray(q_b, dtype=float)])
-    steps = np.diff(path, axis=0)
-    return dataclasses.replace(out, x=np.vstack([x, *down]).reshape(-1),
-                               cost=out.cost + scale * float(np.sum(steps * steps)))
+    up = list(climb.qs) if climb is not None else []  # bottom rung first
+    down = list(reversed(descent.qs)) if descent is not None else []  # top rung first
+    x = np.vstack([*up, *np.asarray(out.x, dtype=float).reshape(-1, n), *down])
+    extra = 0.0
+    for path in ([np.asarray(q_a, dtype=float), *up], [*down, np.asarray(q_b, dtype=float)]):
+        if len(path) > 1:
+            steps = np.diff(np.array(path), axis=0)
+            extra += float(np.sum(steps * steps))
+    return dataclasses.replace(out, x=x.reshape(-1), cost=out.cost + scale * extra)

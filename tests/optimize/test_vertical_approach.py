@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from tampcli.geometry import transforms
-from tampcli.optimize.approach import CLEAR, RUNG, descended, place_approach
+from tampcli.optimize.approach import CLEAR, RUNG, joined, lift, place_approach
 from tampcli.optimize.collide import Held
 from tampcli.optimize.grips import TopGrip
 from tampcli.optimize.nlp import NlpOutcome
@@ -22,18 +22,21 @@ FLOOR = 0.01  # m: the tray floor's top
 CAN = (0.022, 0.06)  # radius, height
 
 
-def tray_folder(path, play: float, rims: bool = True):
+def tray_folder(path, play: float, rims: bool = True, out: bool = False):
     """arm-pick-place with a can on the table and a square tray floor `play` wider
     than the can across (so the can, centred, stands play / 2 from each rim), its
-    four rims 1.2 cm thick and 2.5 cm tall (or left out)."""
+    four rims 1.2 cm thick and 2.5 cm tall (or left out); the goal the can in the
+    tray, or with `out` the can starting in the middle of the tray and the goal
+    the table's spot."""
     src = ROOT / "domains" / "arm-pick-place"
     shutil.copy(src / "domain.pddl", path / "domain.pddl")
     shutil.copy(src / "modes.toml", path / "modes.toml")
+    start, goal = ("tray", "start") if out else ("start", "tray")
     (path / "p.pddl").write_text(
         "(define (problem rimmed-tray) (:domain arm-pick-place)\n"
         "  (:objects can - block start tray - region)\n"
-        "  (:init (at can start) (clear can) (handempty))\n"
-        "  (:goal (at can tray)))\n")
+        f"  (:init (at can {start}) (clear can) (handempty))\n"
+        f"  (:goal (at can {goal})))\n")
     side = 2 * CAN[0] + play
     x, y, t = 0.45, 0.25, 0.012
     parts = [("table", (1.0, 1.2, 0.04), (0.4, 0.0, -0.02)),
@@ -48,8 +51,9 @@ def tray_folder(path, play: float, rims: bool = True):
     for name, size, pose in parts:
         text += (f'\n[[objects]]\nname = "{name}"\nshape = "box"\nsize = {list(size)}\n'
                  f'pose = {list(pose)}\nfixed = true\n')
+    can = [x, y, FLOOR + CAN[1] / 2] if out else [0.55, -0.2, CAN[1] / 2]
     text += (f'\n[[objects]]\nname = "can"\nshape = "cylinder"\nsize = {list(CAN)}\n'
-             f'pose = [0.55, -0.2, {CAN[1] / 2}]\n')
+             f'pose = {can}\n')
     text += ('\n[[regions]]\nname = "start"\non = "table"\ncenter = [0.55, -0.2]\n'
              'size = [0.09, 0.09]\n')
     text += (f'\n[[regions]]\nname = "tray"\non = "floor"\ncenter = [{x}, {y}]\n'
@@ -96,6 +100,21 @@ def test_a_place_between_rims_comes_straight_down_from_over_them(tmp_path):
             np.testing.assert_allclose(reached[:3, :3], target[:3, :3], atol=1e-4)
 
 
+def test_a_take_from_between_rims_goes_straight_up_over_them(tmp_path):
+    skeleton = ops("(pick can tray)", "(place can start)")
+    with lowered_folder(tray_folder(tmp_path, play=0.01, out=True), "p", skeleton) as problem:
+        m = problem.motions[1]
+        assert m.leave_contact == {"floor"}
+        _, q_a, held = _carry_into_tray(problem)
+        climb = lift(problem, m, q_a, held, {}, problem.checker)
+        rest = problem.world.tool_pose(q_a) @ held.grasp
+        assert climb.targets[-1][2, 3] - CAN[1] / 2 == pytest.approx(RIM + CLEAR, abs=1e-9)
+        for target, q in zip(climb.targets, climb.qs, strict=True):
+            np.testing.assert_allclose(target[:2, 3], rest[:2, 3], atol=1e-9)
+            reached = problem.world.tool_pose(q) @ held.grasp
+            np.testing.assert_allclose(reached[:3, 3], target[:3, 3], atol=1e-4)
+
+
 def test_a_place_with_nothing_near_is_left_free(tmp_path):
     with lowered_folder(tray_folder(tmp_path, play=0.01, rims=False), "p",
                         SKELETON) as problem:
@@ -126,10 +145,41 @@ def test_the_descent_is_appended_to_the_carry_and_to_its_cost(tmp_path):
         free = np.vstack([problem.world.start + (a.qs[-1] - problem.world.start) * i / 4
                           for i in range(1, 4)])
         out = NlpOutcome(free.reshape(-1), "solved", 0.5, 0.0, None, 3, None, "")
-        done = descended(out, a, q_b, 2.0)
+        done = joined(out, None, a, problem.world.start, q_b, 2.0)
         waypoints = done.x.reshape(-1, n)
         # the free part's interior, then the rungs from the top down (q_b is the keyframe)
         np.testing.assert_array_equal(waypoints[:3], free)
         np.testing.assert_array_equal(waypoints[3:], np.array(a.qs[::-1]))
         path = np.vstack([*a.qs[::-1], q_b])
         assert done.cost == pytest.approx(0.5 + 2.0 * float(np.sum(np.diff(path, axis=0) ** 2)))
+
+
+def test_a_climb_is_prepended_to_the_carry_and_to_its_cost(tmp_path):
+    skeleton = ops("(pick can tray)", "(place can start)")
+    with lowered_folder(tray_folder(tmp_path, play=0.01, out=True), "p", skeleton) as problem:
+        m = problem.motions[1]
+        _, q_a, held = _carry_into_tray(problem)
+        climb = lift(problem, m, q_a, held, {}, problem.checker)
+        q_b = problem.world.start
+        free = np.vstack([climb.qs[-1] + (q_b - climb.qs[-1]) * i / 4 for i in range(1, 4)])
+        out = NlpOutcome(free.reshape(-1), "solved", 0.5, 0.0, None, 3, None, "")
+        done = joined(out, climb, None, q_a, q_b, 2.0)
+        waypoints = done.x.reshape(-1, problem.n)
+        np.testing.assert_array_equal(waypoints[:climb.rungs], np.array(climb.qs))
+        np.testing.assert_array_equal(waypoints[climb.rungs:], free)
+        path = np.vstack([q_a, *climb.qs])
+        assert done.cost == pytest.approx(0.5 + 2.0 * float(np.sum(np.diff(path, axis=0) ** 2)))
+
+
+def test_a_can_taken_from_between_rims_leaves_them_standing(cli, tmp_path):
+    """Solved and replayed: the can lifted out of the tray 5 mm from its rims and set
+    on the table ends where planned."""
+    folder = tray_folder(tmp_path, play=0.01, out=True)
+    domain, problem = folder / "domain.pddl", folder / "p.pddl"
+    out = tmp_path / "solution.json"
+    solved = cli("solve", "--quiet", "--time-limit", "60", "--out", out, domain, problem)
+    assert solved.code == 0, solved.err
+    run = cli("validate", "--json", "--physics", domain, problem, out)
+    data = json.loads(run.out)
+    assert run.code == 0, data["violations"]
+    assert data["physics"]["objects"]["can"]["distance"] < 0.003
