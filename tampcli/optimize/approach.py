@@ -8,8 +8,9 @@ sideways at once can then pass through a thin rim or a neighbour between two
 sample points (measured: blind8 p07, a cylinder coming down 15 cm and 10 cm
 across in one segment, through a tray's rim 3.6 mm deep at s = 0.92, clear at
 s = 0.75 and 1.0; blind8 p06, a box closing 10 mm on its neighbour in the last
-segment, to 1 mm from it). Where something other than the support stands nearer
-than the margin at the keyframe, the carry ends with a fixed descent: rungs RUNG
+segment, to 1 mm from it). Where the object stands nearer to something other than
+its support than the margin allows at the keyframe, the carry ends with a fixed
+descent: rungs RUNG
 apart at most, each the object right above its resting pose, turned as there,
 the top one high enough for its bottom to clear the tops of those neighbours.
 The path NLP solves the carry to the top rung; the descent is appended to it. A
