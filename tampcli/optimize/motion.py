@@ -14,6 +14,7 @@ import numpy as np
 
 from tampcli.geometry.sampled_path import resample, sampled_path
 from tampcli.optimize import relocate
+from tampcli.optimize.approach import joined, lift, place_approach
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
 from tampcli.optimize.path import (
@@ -35,6 +36,31 @@ MAX_SEGMENTS_RATIO = 4  # a motion's segments at most, as a multiple of `waypoin
 
 
 def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
+    """One motion's path (`_solve_motion`); a carry that takes an object from, or sets
+    it down among, close neighbours solved between the tops of its vertical ends
+    (approach.py), the ends joined to it. `warm`, as this returns it, ends included."""
+    problem = run.problem
+    m = problem.motions[ctx.index]
+    climb = lift(problem, m, ctx.q_a, ctx.held, ctx.moved, run.checker)
+    descent = place_approach(problem, m, ctx.q_b, ctx.held, ctx.moved, run.checker)
+    if climb is None and descent is None:
+        return _solve_motion(run, ctx, T, checks, label, warm)
+    first = climb.rungs if climb is not None else 0
+    last = descent.rungs if descent is not None else 0
+    if warm is not None:
+        warm = np.asarray(warm).reshape(-1, problem.n)
+        warm = warm[first:len(warm) - last]
+    inner = dataclasses.replace(ctx, q_a=climb.qs[-1] if climb is not None else ctx.q_a,
+                                q_b=descent.qs[-1] if descent is not None else ctx.q_b)
+    out = _solve_motion(run, inner, T, checks, label,
+                        warm if warm is not None and len(warm) else None)
+    if out.status != "solved":
+        return out
+    segments = len(out.x) // problem.n + 1
+    return joined(out, climb, descent, ctx.q_a, ctx.q_b, segments / problem.options.waypoints)
+
+
+def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """One motion's path NLP under the margin schedule.
 
     From the via-point start with the options' margin; where that fails, from
