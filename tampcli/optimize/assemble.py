@@ -134,12 +134,3 @@ def assemble(problem: TrajectoryProblem, start, waypoints: dict, contexts: list[
             w.boundary()
         step.kind.phases(w, step)
     return w.traj, tuple(w.phases), w.poses, w.grasps
-
-
-def motion_costs(traj: np.ndarray, phases, T: int) -> tuple[float, ...]:
-    """Per motion phase, its cost: (T_k / T) * the sum of its squared joint steps, T_k
-    its segments and T the options' `waypoints` (path.phase_rows_fn's cost). An
-    action's phase spans no segment."""
-    d = np.sum(np.diff(np.asarray(traj, dtype=float), axis=0) ** 2, axis=1)
-    return tuple(float(np.sum(d[p.start:p.end])) * (p.end - p.start) / T
-                 for p in phases if p.end > p.start)

@@ -10,7 +10,7 @@ import time
 
 from tampcli.optimize import relocate
 from tampcli.optimize import verify as verify_mod
-from tampcli.optimize.assemble import assemble, motion_costs, walk
+from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.keyframe_stage import (
     face_grips,
     keyframes,
@@ -137,7 +137,10 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
                         worst_constraint=f"path bound {bound:.4g} after "
                         f"{_phase_label(problem, ctx.index)}")
         traj, phases, poses, grasps = assemble(problem, run.start, waypoints, contexts)
-        phase_costs = motion_costs(traj, phases, T)
+        # Each motion's cost as its NLP weighed it (path.phase_rows_fn: T_k / T times its
+        # segments' sum, the vertical ends of approach.py included), not the plain sum
+        # over the trajectory: a motion on more segments would look cheaper.
+        phase_costs = tuple(costs[k] for k in range(problem.n_keyframes))
         result = run.result("solved", cost=float(sum(phase_costs)), phase_costs=phase_costs,
                             kkt=dataclasses.replace(kfr.kkt, path=combined(kkts.values())),
                             trajectory=traj,

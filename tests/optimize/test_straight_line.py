@@ -25,6 +25,7 @@ def test_free_motions_are_straight_and_a_blocked_one_goes_round(planar):
     path = solve(problem, "path", keyframes)
     assert path.solved, path.worst_constraint
     assert verify(problem, path, factor=10) == []
+    assert path.cost == sum(path.phase_costs)
     traj = path.trajectory
     motions = [p for p in path.phases if p.action is None]
     straight = blocked = 0
