@@ -73,3 +73,19 @@ def central_differences(f, x, h: float = 1e-6) -> np.ndarray:
         e[i] = h
         cols.append((f(x + e) - f(x - e)) / (2 * h))
     return np.array(cols).T
+
+
+def solved_in_physics(cli, folder: Path, tmp_path: Path, time_limit: int = 60) -> dict:
+    """`validate --json --physics` of `solve`'s answer to folder's domain.pddl and
+    p.pddl, both asserted to succeed; the replay's `physics` object."""
+    import json
+
+    domain, problem = folder / "domain.pddl", folder / "p.pddl"
+    out = tmp_path / "solution.json"
+    solved = cli("solve", "--quiet", "--time-limit", str(time_limit), "--out", out, domain,
+                 problem)
+    assert solved.code == 0, solved.err
+    run = cli("validate", "--json", "--physics", domain, problem, out)
+    data = json.loads(run.out)
+    assert run.code == 0, data["violations"]
+    return data["physics"]

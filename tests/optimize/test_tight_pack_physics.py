@@ -3,12 +3,11 @@ gaps, solved and replayed in physics (blind8 p06's class): both stay where plann
 
 from __future__ import annotations
 
-import json
 import shutil
 
 import pytest
 
-from .helpers import ROOT
+from .helpers import ROOT, solved_in_physics
 
 BOX = 0.053  # m: the boxes' side
 PLAY = 0.005  # m: the tray's length less the two boxes'
@@ -51,14 +50,7 @@ def pack_folder(path):
 
 @pytest.mark.slow
 def test_a_tight_pack_stays_put_in_the_physics_replay(cli, tmp_path):
-    folder = pack_folder(tmp_path)
-    domain, problem = folder / "domain.pddl", folder / "p.pddl"
-    out = tmp_path / "solution.json"
-    solved = cli("solve", "--quiet", "--time-limit", "120", "--out", out, domain, problem)
-    assert solved.code == 0, solved.err
-    run = cli("validate", "--json", "--physics", domain, problem, out)
-    data = json.loads(run.out)
-    assert run.code == 0, data["violations"]
+    physics = solved_in_physics(cli, pack_folder(tmp_path), tmp_path, time_limit=120)
     for name in ("p", "q"):
-        drift = data["physics"]["objects"][name]
+        drift = physics["objects"][name]
         assert drift["distance"] < 0.003 and drift["angle_deg"] < 2.0, (name, drift)

@@ -3,7 +3,6 @@ rimmed tray comes straight down past the rims; with nothing near, a carry is fre
 
 from __future__ import annotations
 
-import json
 import shutil
 
 import numpy as np
@@ -15,7 +14,7 @@ from tampcli.optimize.collide import Held
 from tampcli.optimize.grips import TopGrip
 from tampcli.optimize.nlp import NlpOutcome
 
-from .helpers import ROOT, lowered_folder, ops
+from .helpers import ROOT, lowered_folder, ops, solved_in_physics
 
 RIM = 0.025  # m: the rims' height over the table
 FLOOR = 0.01  # m: the tray floor's top
@@ -126,15 +125,8 @@ def test_a_can_set_down_between_rims_stands_in_the_physics_replay(cli, tmp_path)
     """Solved and replayed: 5 mm from each rim, the can ends upright where planned
     (blind8 p07's class: before the vertical approach, a cylinder came down across a
     rim between two collision samples and landed on its side)."""
-    folder = tray_folder(tmp_path, play=0.01)
-    domain, problem = folder / "domain.pddl", folder / "p.pddl"
-    out = tmp_path / "solution.json"
-    solved = cli("solve", "--quiet", "--time-limit", "60", "--out", out, domain, problem)
-    assert solved.code == 0, solved.err
-    run = cli("validate", "--json", "--physics", domain, problem, out)
-    data = json.loads(run.out)
-    assert run.code == 0, data["violations"]
-    assert data["physics"]["objects"]["can"]["distance"] < 0.003
+    physics = solved_in_physics(cli, tray_folder(tmp_path, play=0.01), tmp_path)
+    assert physics["objects"]["can"]["distance"] < 0.003
 
 
 def test_the_descent_is_appended_to_the_carry_and_to_its_cost(tmp_path):
@@ -174,12 +166,5 @@ def test_a_climb_is_prepended_to_the_carry_and_to_its_cost(tmp_path):
 def test_a_can_taken_from_between_rims_leaves_them_standing(cli, tmp_path):
     """Solved and replayed: the can lifted out of the tray 5 mm from its rims and set
     on the table ends where planned."""
-    folder = tray_folder(tmp_path, play=0.01, out=True)
-    domain, problem = folder / "domain.pddl", folder / "p.pddl"
-    out = tmp_path / "solution.json"
-    solved = cli("solve", "--quiet", "--time-limit", "60", "--out", out, domain, problem)
-    assert solved.code == 0, solved.err
-    run = cli("validate", "--json", "--physics", domain, problem, out)
-    data = json.loads(run.out)
-    assert run.code == 0, data["violations"]
-    assert data["physics"]["objects"]["can"]["distance"] < 0.003
+    physics = solved_in_physics(cli, tray_folder(tmp_path, play=0.01, out=True), tmp_path)
+    assert physics["objects"]["can"]["distance"] < 0.003

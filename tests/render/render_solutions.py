@@ -26,6 +26,20 @@ def interpolate(configs, steps: int) -> list[np.ndarray]:
     return out
 
 
+def top_down_reach(world):
+    """reach(xyz, seed) -> the configuration with the tool at xyz, pointing as at start."""
+    down = world.tool_pose(world.start)
+
+    def reach(xyz, seed):
+        target = down.copy()
+        target[:3, 3] = xyz
+        q, residual = world.ik(target, seed)
+        assert residual < 1e-4, residual
+        return q
+
+    return reach
+
+
 def _pose(t) -> list[float]:
     return transforms.xyzquat_from_pose(t)
 
@@ -36,16 +50,9 @@ def panda_solution(folder: Path = PANDA, scene: str = "p01.scene.toml",
     """Pick cube a from the table and place it in the goal region."""
     sc = load_scene(folder / scene, geometric=False)
     with World(sc) as world:
-        down = world.tool_pose(world.start)
+        reach = top_down_reach(world)
         a_start = world.body_pose("a")
         b_start = world.body_pose("b")
-
-        def reach(xyz, seed):
-            target = down.copy()
-            target[:3, 3] = xyz
-            q, residual = world.ik(target, seed)
-            assert residual < 1e-4, residual
-            return q
 
         a_xyz = a_start[:3, 3]
         goal_xyz = np.array([0.45, 0.3, 0.025])

@@ -5,7 +5,7 @@ still puts the object down where the plan puts it."""
 from __future__ import annotations
 
 import numpy as np
-from render_solutions import PANDA, interpolate
+from render_solutions import PANDA, interpolate, top_down_reach
 
 from tampcli.geometry import transforms
 from tampcli.geometry.scene import load_scene
@@ -20,15 +20,8 @@ def _sideways_carry(steps: int) -> Solution:
     in the goal region; `steps` segments between corners."""
     scene = load_scene(PANDA / "p01.scene.toml", geometric=False)
     with World(scene) as world:
-        down = world.tool_pose(world.start)
+        reach = top_down_reach(world)
         a_start = world.body_pose("a")
-
-        def reach(xyz, seed):
-            target = down.copy()
-            target[:3, 3] = xyz
-            q, residual = world.ik(target, seed)
-            assert residual < 1e-4, residual
-            return q
 
         a_xyz = a_start[:3, 3]
         goal_xyz = np.array([0.45, 0.3, 0.025])
