@@ -24,17 +24,21 @@ from tampcli.geometry.world import World
 OUT = Path(__file__).parent / "results" / "geometry.md"
 
 
-def ten_box_scene(seed: int = 0) -> Scene:
-    """A Panda on a table with 10 boxes in its workspace, none touching the robot's start."""
+def ten_box_scene(seed: int = 0, shape: str = "box") -> Scene:
+    """A Panda on a table with 10 boxes (or cylinders) in its workspace, none touching
+    the robot's start."""
     rng = np.random.default_rng(seed)
     bodies = [Body("table", "box", (1.2, 1.4, 0.04), (0.3, 0.0, -0.02, 0, 0, 0, 1), True)]
     while len(bodies) < 11:
         r, a = rng.uniform(0.3, 0.75), rng.uniform(-2.2, 2.2)
         size = tuple(rng.uniform(0.04, 0.15, 3))
+        height = size[2]
+        if shape == "cylinder":
+            size = (size[0] / 2, height)
         x, y = r * np.cos(a), r * np.sin(a)
         quat = transforms.matrix_to_quat(transforms.rot_z(rng.uniform(-3, 3)))
-        bodies.append(Body(f"box{len(bodies)}", "box", size,
-                           (x, y, size[2] / 2 + rng.uniform(0, 0.4), *quat), True))
+        bodies.append(Body(f"{shape}{len(bodies)}", shape, size,
+                           (x, y, height / 2 + rng.uniform(0, 0.4), *quat), True))
     return Scene(None, RobotSpec("panda"), tuple(bodies))
 
 
@@ -175,6 +179,25 @@ def bench_batched(checker, qs):
     return seconds / calls[0], seconds / len(qs), calls[0]
 
 
+def bench_cylinders(n_q: int):
+    """distances_many in the scene with cylinders, where FCL's answers mostly fail the
+    check: per pair that reached FCL, with coal's second opinion and without it (our
+    GJK then answers), and PyBullet's getClosestPoints per active pair."""
+    with World(ten_box_scene(shape="cylinder")) as world:
+        checker = CollisionChecker(world)
+        rng = np.random.default_rng(1)
+        qs = [rng.uniform(world.lower, world.upper) for _ in range(n_q)]
+        with_coal, _, reached = bench_batched(checker, qs)
+        coal, checker.coal = checker.coal, None
+        try:
+            without, _, _ = bench_batched(checker, qs)
+        finally:
+            checker.coal = coal
+        found = active_pairs(world, checker, qs)
+        _, _, peer = bench_pairs(world, checker, found)
+    return with_coal, without, peer, reached
+
+
 def bench_whole(world, checker, qs):
     it = iter(range(10**9))
     pb, client, robot = _pybullet(world)
@@ -211,6 +234,7 @@ def main(argv=None) -> int:
         whole, whole_peer = bench_whole(world, checker, qs)
         batched_pair, batched_whole, batched_pairs = bench_batched(checker, qs)
         active = np.mean([len(checker.distances(q, activation=0.05)) for q in qs])
+    cyl_coal, cyl_gjk, cyl_peer, cyl_pairs = bench_cylinders(n_q)
     us = 1e6
     rows = [
         ("FK, all 13 Panda links, per configuration", "<= 50 us", fk * us, fk_peer * us,
@@ -226,6 +250,11 @@ def main(argv=None) -> int:
          f"{n_q} configurations: broad phase, FCL, checks, gradients; per pair that "
          f"reached FCL, {batched_pairs} in all)", "<= 30 us", batched_pair * us,
          pair_peer * us, "getClosestPoints(link, box), per active pair"),
+        (f"  same, the scene's boxes made upright cylinders ({cyl_pairs} pairs reached "
+         f"FCL), FCL's failed answers asked again of coal", "<= 30 us", cyl_coal * us,
+         cyl_peer * us, "getClosestPoints(link, cylinder), per active pair"),
+        ("    same, without coal (our GJK answers where FCL's answer fails the check)", "",
+         cyl_gjk * us, cyl_peer * us, "same"),
         ("signed distance per penetrating pair, same work", "", pair_in * us,
          pair_peer_in * us, "same"),
         ("  of which the certified narrow phase (FCL EPA + depth bound)", "", narrow_in * us,

@@ -36,6 +36,7 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.geometry.broad import Boxes, PartTable, broad_gaps, masks, screen
+from tampcli.geometry.coal_query import CoalDistance
 from tampcli.geometry.narrow import Placed, signed_distance
 from tampcli.geometry.pairs import Batch, Contact, Query, Side
 from tampcli.geometry.parts import (
@@ -60,6 +61,7 @@ class CollisionChecker:
         self.n = world.n
         self._request = fcl.DistanceRequest(enable_nearest_points=True,
                                             enable_signed_distance=True)
+        self.coal = CoalDistance()  # narrow.certified's second opinion
         self.link_parts: list[Part] = robot_parts(world)
         self.body_shapes = {b.name: body_shapes(world, b) for b in world.scene.bodies}
         self.body_parts: dict[str, list[Part]] = {
@@ -233,7 +235,7 @@ class CollisionChecker:
                      Side(links.table, j_, links.frames[s_, j_], self._link_index[j_]))
 
     def _contact(self, query, pa: Part, a: Placed, pb_: Part, b: Placed) -> Contact:
-        d, p1, p2, n = signed_distance(self._request, a, pa.obj, b, pb_.obj)
+        d, p1, p2, n = signed_distance(self._request, a, pa.obj, b, pb_.obj, self.coal)
         grad = np.zeros(self.n)
         link_a, link_b = self._moving_link(pa), self._moving_link(pb_)
         if link_a is not None:
@@ -286,7 +288,7 @@ class CollisionChecker:
             for pb_ in self.body_parts[name_b]:
                 a = Placed(pa.shape, pose_a @ pa.shape.local)
                 b = Placed(pb_.shape, pose_b @ pb_.shape.local)
-                d, p1, p2, n = signed_distance(self._request, a, pa.obj, b, pb_.obj)
+                d, p1, p2, n = signed_distance(self._request, a, pa.obj, b, pb_.obj, self.coal)
                 if best is None or d < best[0]:
                     best = (d, p1, p2, n)
         d, p1, p2, n = best

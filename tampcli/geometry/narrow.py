@@ -86,14 +86,15 @@ class Placed:
         return base + r * np.linalg.norm(local, axis=1) + ends
 
 
-def signed_distance(request, a: Placed, oa, b: Placed, ob):
+def signed_distance(request, a: Placed, oa, b: Placed, ob, second=None):
     """(distance, point on a, point on b, unit normal from a to b), world frame,
     of the two solids (each shape grown by its margin).
 
     `oa`, `ob` are the FCL objects of the two shapes; they are moved to the
-    placed poses here.
+    placed poses here. `second`: as in `certified`.
     """
-    return rounded(*_core_distance(request, a, oa, b, ob), a.shape.margin, b.shape.margin)
+    return rounded(*_core_distance(request, a, oa, b, ob, second), a.shape.margin,
+                   b.shape.margin)
 
 
 def rounded(d, p1, p2, normal, margin_a: float, margin_b: float):
@@ -108,24 +109,25 @@ def rounded(d, p1, p2, normal, margin_a: float, margin_b: float):
 PRISMS = ("box", "cylinder")  # kinds prism.py answers when upright
 
 
-def _core_distance(request, a: Placed, oa, b: Placed, ob):
+def _core_distance(request, a: Placed, oa, b: Placed, ob, second=None):
     if a.shape.kind in PRISMS and b.shape.kind in PRISMS:
         exact = prism.distance(a, b)
         if exact is not None:
             return exact
-    return certified(None if no_fcl(a, b) else fcl_distance(request, a, oa, b, ob), a, b)
+    raw = None if no_fcl(a, b) else fcl_distance(request, a, oa, b, ob)
+    return certified(raw, a, b, second)
 
 
-def certified(raw, a: Placed, b: Placed, again=None):
+def certified(raw, a: Placed, b: Placed, second=None):
     """The certified answer from FCL's raw one (distance, witness on a, witness on b;
     None if FCL was not asked or threw): kept when the quick check (the gap on its
     normal) passes, otherwise `checked`.
 
-    `again`, when given, asks FCL another way (a callable giving another raw
-    answer) once a separated answer fails the check, before our GJK: FCL's GJK,
-    stopped early from one placement of the pair, mostly stops right from another
-    (2 times in 3 on random Panda configurations), and asking it costs ~10 us
-    against ~160 us for `checked`'s GJK.
+    `second`, when given, is another engine's query (coal_query.CoalDistance: a
+    callable of (a, b) giving a raw answer or None), asked once a separated answer
+    fails the check, before our GJK: FCL 0.7's GJK stops early on cylinders and
+    meshes, coal's runs to its tolerance at ~14 us a pair against ~210 us for
+    `checked`'s GJK (coal_query.py). Its answer is checked the same way.
     """
     if raw is not None:
         d, p1, p2 = raw
@@ -133,8 +135,8 @@ def certified(raw, a: Placed, b: Placed, again=None):
         if d > TOLERANCE and normal is not None:
             if d + overlap(a, b, normal) <= TOLERANCE:
                 return d, p1, p2, normal
-            if again is not None:
-                return certified(again(), a, b)
+            if second is not None:
+                return certified(second(a, b), a, b)
     return checked(raw, a, b)
 
 

@@ -20,7 +20,6 @@ from tampcli.geometry import certify, prism, transforms
 from tampcli.geometry.broad import PartTable
 from tampcli.geometry.certify import Solids
 from tampcli.geometry.narrow import TOLERANCE, Placed, certified, no_fcl, rounded
-from tampcli.geometry.narrow import fcl_distance as narrow_fcl_distance
 from tampcli.geometry.parts import Part
 
 SCALAR_PAIRS = 8  # groups of at most this many pairs skip the array set-up (measured)
@@ -307,12 +306,10 @@ class Batch:
             self.out[s].append(Contact(pa.owner, pb_.owner, float(d), p1, p2, n, grad))
 
     def _certified(self, raw, pa: Part, wa, pb_: Part, wb):
-        """narrow.certified of FCL's answer (in the world) for one pair, asking FCL
-        again with both shapes in their world placements if it fails the check."""
+        """narrow.certified of FCL's answer (in the world) for one pair, asking coal
+        (coal_query.py) if it fails the check."""
         a, b = Placed(pa.shape, wa), Placed(pb_.shape, wb)
-        request = self.checker._request
-        return certified(raw, a, b,
-                         again=lambda: narrow_fcl_distance(request, a, pa.obj, b, pb_.obj))
+        return certified(raw, a, b, self.checker.coal)
 
 
 def _relative(ra, xa, rb, xb):
