@@ -57,6 +57,15 @@ class IkMemo:
 
 
 def solve_ik(world, target, seed, position_only, iterations, restarts, tolerance, rng_seed):
+    """Damped least squares from each seed in turn (the caller's, the start, then
+    `restarts` random ones) until one comes within `tolerance`; the best otherwise.
+
+    The first seed runs alone (it mostly succeeds: arm-sort, 589 of 661 targets
+    reached); the others run side by side as one batch of arrays
+    (`_levenberg_marquardt_batch`), with the same answer as one after another:
+    the first in order that succeeds. A target no seed reaches (arm-sort: 66 of
+    661 targets, 10 seeds of ~40 steps each, 6.2 s of its 7.4 s of IK) costs about
+    as many batched steps as its longest seed takes instead of the sum of all."""
     lower, upper = world.lower, world.upper
     rng = np.random.default_rng(rng_seed)
     seeds = []
@@ -66,14 +75,16 @@ def solve_ik(world, target, seed, position_only, iterations, restarts, tolerance
     finite_lo = np.where(np.isfinite(lower), lower, -np.pi)
     finite_hi = np.where(np.isfinite(upper), upper, np.pi)
     seeds.extend(rng.uniform(finite_lo, finite_hi) for _ in range(restarts))
-    best_q, best_res = seeds[0], np.inf
     rows = slice(0, 3) if position_only else slice(0, 6)
-    for q0 in seeds:
-        q, res = _levenberg_marquardt(world, target, q0, rows, iterations, tolerance)
-        if res < best_res:
-            best_q, best_res = q, res
-        if best_res <= tolerance:
-            break
+    best_q, best_res = _levenberg_marquardt(world, target, seeds[0], rows, iterations,
+                                            tolerance)
+    if best_res <= tolerance or len(seeds) == 1:
+        return best_q, float(best_res)
+    qs, res = _levenberg_marquardt_batch(world, target, np.array(seeds[1:]), rows,
+                                         iterations, tolerance)
+    i = int(np.argmax(res <= tolerance)) if np.any(res <= tolerance) else int(np.argmin(res))
+    if res[i] < best_res:
+        best_q, best_res = qs[i], res[i]
     return best_q, float(best_res)
 
 
@@ -113,6 +124,72 @@ def _levenberg_marquardt(world, target, q, rows, iterations, tolerance):
         if stalled >= 12 or damping > 1e3:
             break  # a local minimum (often a joint limit): let another seed try
     return q, norm
+
+
+def _levenberg_marquardt_batch(world, target, qs, rows, iterations, tolerance):
+    """`_levenberg_marquardt` from each row of qs (S, n) at once: (final qs, residuals).
+
+    Each seed keeps its own damping and stall count and stops by the same rules;
+    the batch stops once the first seed in order that reached `tolerance` has no
+    seed before it still running (its answer is then the one a sequential run
+    returns), or when every seed has stopped."""
+    lower, upper = world.lower, world.upper
+    chain, tool = world.chain, world._tool_index
+    eye = np.eye(len(range(6)[rows]))
+
+    def evaluate(q):
+        frames = chain.fk_batch(q)
+        return frames, _pose_errors(frames[:, tool], target)[:, rows]
+
+    qs = np.array(qs, dtype=float)
+    frames, err = evaluate(qs)
+    norm = np.linalg.norm(err, axis=1)
+    damping = np.full(len(qs), 1e-2)
+    stalled = np.zeros(len(qs), dtype=int)
+    running = norm > tolerance
+    for _ in range(iterations):
+        reached = np.flatnonzero(norm <= tolerance)
+        if not running.any() or (len(reached) and not running[:reached[0]].any()):
+            break
+        a = np.flatnonzero(running)
+        jac = chain.tool_jacobian_batch(frames[a], tool)[:, rows]
+        q, d2 = qs[a], (damping[a] ** 2)[:, None, None] * eye
+        step = _steps(jac, err[a], d2)
+        blocked = ((q <= lower + 1e-9) & (step < 0)) | ((q >= upper - 1e-9) & (step > 0))
+        again = np.flatnonzero(blocked.any(axis=1))
+        if len(again):
+            freed = jac[again] * ~blocked[again][:, None, :]
+            step[again] = _steps(freed, err[a[again]], d2[again])
+        big = np.maximum(np.abs(step).max(axis=1), 1e-12)
+        step *= np.minimum(1.0, MAX_STEP / big)[:, None]
+        q_new = np.clip(q + step, lower, upper)
+        frames_new, err_new = evaluate(q_new)
+        norm_new = np.linalg.norm(err_new, axis=1)
+        better = norm_new < norm[a]
+        good = a[better]
+        stalled[good] = np.where(norm_new[better] < 0.999 * norm[good], 0, stalled[good] + 1)
+        qs[good], frames[good], err[good], norm[good] = (
+            q_new[better], frames_new[better], err_new[better], norm_new[better])
+        damping[good] = np.maximum(damping[good] * 0.3, 1e-5)
+        bad = a[~better]
+        stalled[bad] += 1
+        damping[bad] *= 5.0
+        running[a] = (norm[a] > tolerance) & (stalled[a] < 12) & (damping[a] <= 1e3)
+    return qs, norm
+
+
+def _pose_errors(current: np.ndarray, target: np.ndarray) -> np.ndarray:
+    """`pose_error` of each of (S, 4, 4) poses: (S, 6)."""
+    dp = target[:3, 3] - current[:, :3, 3]
+    rel = np.matmul(target[:3, :3], current[:, :3, :3].transpose(0, 2, 1))
+    return np.concatenate([dp, transforms.rotation_logs(rel)], axis=1)
+
+
+def _steps(jac: np.ndarray, err: np.ndarray, damping: np.ndarray) -> np.ndarray:
+    """`_step` of each row: jac (S, m, n), err (S, m), damping (S, m, m) (d^2 I)."""
+    jt = jac.transpose(0, 2, 1)
+    return np.matmul(jt, np.linalg.solve(np.matmul(jac, jt) + damping, err[:, :, None]))[
+        :, :, 0]
 
 
 def _step(jac: np.ndarray, err: np.ndarray, damping: float) -> np.ndarray:

@@ -153,6 +153,22 @@ def rotation_log(rot) -> np.ndarray:
     return angle / (2.0 * math.sin(angle)) * w
 
 
+def rotation_logs(rots: np.ndarray) -> np.ndarray:
+    """`rotation_log` of each of (S, 3, 3) rotations: (S, 3). Rows near 0 or pi take
+    `rotation_log`'s own branches."""
+    m = np.asarray(rots, dtype=float)
+    cos = np.clip((np.trace(m, axis1=1, axis2=2) - 1.0) / 2.0, -1.0, 1.0)
+    angle = np.arccos(cos)
+    w = np.stack([m[:, 2, 1] - m[:, 1, 2], m[:, 0, 2] - m[:, 2, 0], m[:, 1, 0] - m[:, 0, 1]],
+                 axis=1)
+    plain = (angle >= 1e-6) & (math.pi - angle >= 1e-4)
+    out = np.empty((len(m), 3))
+    out[plain] = (angle[plain] / (2.0 * np.sin(angle[plain])))[:, None] * w[plain]
+    for i in np.flatnonzero(~plain).tolist():
+        out[i] = rotation_log(m[i])
+    return out
+
+
 def cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Row-wise cross product of (..., 3) arrays (np.cross costs several times more)."""
     a0, a1, a2 = a[..., 0], a[..., 1], a[..., 2]

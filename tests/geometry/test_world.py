@@ -330,3 +330,31 @@ def test_ik_answers_a_question_asked_again_the_same_way(panda):
     # another question is answered afresh
     q4, r4 = panda.ik(target, seed=panda.start, rng_seed=1)
     assert r4 < 1e-4
+
+
+@pytest.mark.parametrize("rows", [slice(0, 6), slice(0, 3)])
+def test_batched_ik_seeds_run_as_they_would_one_by_one(panda, rows):
+    """ik._levenberg_marquardt_batch: each seed runs as it would alone (same steps,
+    same stopping rules: the same outcome, and the same answer to rounding; a failing
+    run may drift apart by rounding where it wanders), and the batch runs until the
+    first seed in order that succeeds, as solve_ik one seed after another; targets
+    reachable, reachable from some seeds only, and out of reach."""
+    from tampcli.geometry import ik
+
+    rng = np.random.default_rng(3)
+    targets = [panda.tool_pose(q) for q in _random_qs(panda, 6, seed=5)]
+    targets += [transforms.pose(None, (0.9, 0.1, 0.3)), transforms.pose(None, (1.4, 0.0, 0.5))]
+    firsts = []
+    for target in targets:
+        seeds = np.array([rng.uniform(panda.lower, panda.upper) for _ in range(6)])
+        one_by_one = [ik._levenberg_marquardt(panda, target, s, rows, 200, 1e-5)
+                      for s in seeds]
+        qs, res = ik._levenberg_marquardt_batch(panda, target, seeds, rows, 200, 1e-5)
+        ok = [r <= 1e-5 for _, r in one_by_one]
+        first = ok.index(True) if any(ok) else None
+        last = first if first is not None else len(seeds) - 1
+        assert [r <= 1e-5 for r in res[:last + 1]] == ok[:last + 1]
+        if first is not None:
+            np.testing.assert_allclose(qs[first], one_by_one[first][0], atol=1e-6)
+        firsts.append(first)
+    assert None in firsts and any(f not in (None, 0) for f in firsts)
