@@ -74,6 +74,18 @@ def _stability_rows(rows: Rows, problem, step, state: dict, supports: dict) -> N
         base, support = support, supports.get(support)
 
 
+def _clear_of_region(info, region) -> bool:
+    """A fixed body whose footprint (its bounding circle) stays C.GAP clear of the
+    region's rectangle: a footprint inside the region is apart from it, so its apart
+    row is implied by the region's rows (arm-sort: most of each place's apart rows,
+    the other tray's rims and the far obstacles, each evaluation of every NLP)."""
+    centre = np.asarray(info.pose[:2], dtype=float)
+    lo, hi = np.asarray(region.lower, dtype=float), np.asarray(region.upper, dtype=float)
+    outside = np.maximum(np.maximum(lo - centre, centre - hi), 0.0)
+    radius = info.half[0] if info.disk else float(np.hypot(info.half[0], info.half[1]))
+    return float(np.linalg.norm(outside)) - radius >= C.GAP
+
+
 def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: dict,
                     supports: dict) -> None:
     """Where a released or pushed object ends: inside its region / on its body, apart,
@@ -97,9 +109,11 @@ def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: d
         oinfo = problem.bodies[other]
         if vertical_overlap(z, info.half[2], heights[other], oinfo.half[2]):
             C.apart(rows.ineq, name, P, info, Q, oinfo, other)
+    region = regions.get(step.target)
     for other, oinfo in problem.bodies.items():
         if oinfo.fixed and other != step.support and vertical_overlap(
-                z, info.half[2], oinfo.pose[2], oinfo.half[2]):
+                z, info.half[2], oinfo.pose[2], oinfo.half[2]) and not (
+                region is not None and _clear_of_region(oinfo, region)):
             C.apart(rows.ineq, name, P, info, constant_pose(*oinfo.pose), oinfo, other)
     state[step.obj] = P
     heights[step.obj] = z
