@@ -80,6 +80,13 @@ BLIND8 = {"p01": ("swap via buffer", 8), "p02": ("walled bin, clutter", 8),
           "p05": ("push behind blockers", 6), "p06": ("tight packing", 6),
           "p07": ("long sequence", 10), "p08": ("ringed target", 6)}
 
+# problems/blind9 (written against 77f1d90): ordinary first problems (p01-p04) and
+# harder ones (p05-p08): own typed domains, symbolic stations, a derived predicate, a sphere.
+BLIND9 = {"p01": ("reach edge, shelf", 2), "p02": ("place on an object", 2),
+          "p03": ("yaw by region, turned base", 2), "p04": ("push cylinder, off-normal", 2),
+          "p05": ("typed domain, blocker", 8), "p06": ("symbolic station", 10),
+          "p07": ("push and drag, free a spot", 5), "p08": ("derived predicate, sphere", 8)}
+
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
 # off where pushes or a blocking neighbour change the count; None: not known).
@@ -102,6 +109,7 @@ def problems() -> list[tuple[str, str, str, int]]:
     rows += [("blind6", stem, cls, n) for stem, (cls, n) in sorted(BLIND6.items())]
     rows += [("blind7", stem, cls, n) for stem, (cls, n) in sorted(BLIND7.items())]
     rows += [("blind8", stem, cls, n) for stem, (cls, n) in sorted(BLIND8.items())]
+    rows += [("blind9", stem, cls, n) for stem, (cls, n) in sorted(BLIND9.items())]
     rows += [("gen1", stem, cls, n) for stem, (cls, n) in sorted(GEN1.items())]
     return rows
 
