@@ -397,3 +397,32 @@ def test_an_oblong_object_starts_turned_where_only_that_fits():
     assert _fitting_yaw(bar, 0.0, across) == pytest.approx(math.pi / 2)
     assert _fitting_yaw(bar, 0.0, along) == 0.0
     assert _fitting_yaw(bar, 0.3, SimpleNamespace(size=(0.05, 0.05))) == 0.3  # none fits
+
+
+def test_a_fixed_body_clear_of_the_region_gets_no_apart_row():
+    """stages._clear_of_region: the row is left out only where every footprint inside
+    the region is C.GAP apart from the body's footprint (its bounding circle), so the
+    region's rows imply it; a body nearer, or in the region, keeps its row; and the
+    test agrees with the exact separation at the region's worst placement."""
+    from tampcli.geometry.model import Region
+    from tampcli.optimize.stages import _clear_of_region
+
+    region = Region("r", "table", (0.5, 0.0), (0.2, 0.1))  # x 0.4..0.6, y -0.05..0.05
+    post = BodyInfo("post", "box", (0.02, 0.02, 0.1), True, (0.7, 0.0, 0.1, 0.6), True)
+    assert _clear_of_region(post, region)  # 10 cm from the region, half diagonal 2.8 cm
+    near = BodyInfo("near", "box", (0.02, 0.02, 0.1), True, (0.625, 0.0, 0.1, 0.0), True)
+    assert not _clear_of_region(near, region)  # its face 5 mm from the region's edge
+    inside = BodyInfo("in", "cylinder", (0.01, 0.01, 0.1), True, (0.5, 0.0, 0.1, 0.0), True)
+    assert not _clear_of_region(inside, region)
+    rng = np.random.default_rng(4)
+    for _ in range(200):  # wherever BOX sits inside the region, a clear body is apart
+        x, y, yaw = rng.uniform(0.4, 0.6), rng.uniform(-0.05, 0.05), rng.uniform(-3, 3)
+        c, s = math.cos(yaw), math.sin(yaw)
+        corners = [(x + a * 0.05 * c - b * 0.03 * s, y + a * 0.05 * s + b * 0.03 * c)
+                   for a in (-1, 1) for b in (-1, 1)]
+        if not all(0.4 <= px <= 0.6 and -0.05 <= py <= 0.05 for px, py in corners):
+            continue
+        rows = RowSet()
+        C.apart(rows, "s", planar_pose("p", x, y, 0.02, yaw), BOX,
+                planar_pose("o", 0.7, 0.0, 0.1, 0.6), post, "post")
+        assert rows.values[0][0] >= 0.0
