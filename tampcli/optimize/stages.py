@@ -12,6 +12,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+import math
+
 import numpy as np
 
 from tampcli.optimize import constraints as C
@@ -79,11 +81,11 @@ def _clear_of_region(info, region) -> bool:
     region's rectangle: a footprint inside the region is apart from it, so its apart
     row is implied by the region's rows (arm-sort: most of each place's apart rows,
     the other tray's rims and the far obstacles, each evaluation of every NLP)."""
-    centre = np.asarray(info.pose[:2], dtype=float)
-    lo, hi = np.asarray(region.lower, dtype=float), np.asarray(region.upper, dtype=float)
-    outside = np.maximum(np.maximum(lo - centre, centre - hi), 0.0)
-    radius = info.half[0] if info.disk else float(np.hypot(info.half[0], info.half[1]))
-    return float(np.linalg.norm(outside)) - radius >= C.GAP
+    (cx, cy), (sx, sy) = region.center, region.size
+    dx = max(abs(info.pose[0] - cx) - 0.5 * sx, 0.0)
+    dy = max(abs(info.pose[1] - cy) - 0.5 * sy, 0.0)
+    radius = info.half[0] if info.disk else math.hypot(info.half[0], info.half[1])
+    return math.hypot(dx, dy) - radius >= C.GAP
 
 
 def _placement_rows(rows: Rows, problem, step, P: PoseX, state: dict, heights: dict,
