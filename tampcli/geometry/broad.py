@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from tampcli.geometry import obb
-from tampcli.geometry.narrow import PRISMS
+from tampcli.geometry.narrow import CURVED, PRISMS
 from tampcli.geometry.parts import Part
 
 HULL_SCREEN = 4  # the hull-point screen pays for itself from this many candidates on
@@ -46,6 +46,7 @@ class PartTable:
     polytope: np.ndarray  # (P,) the solid is the hull of `vertices`
     prism: np.ndarray  # (P,) a box or cylinder (prism.py answers them upright)
     box: np.ndarray  # (P,)
+    curved: np.ndarray  # (P,) a cylinder or capsule: coal, not FCL, is asked (pairs.py)
     margin: np.ndarray  # (P,) m, the rounding of each shape (shapes.py)
     objs: tuple  # the FCL objects
 
@@ -68,6 +69,7 @@ class PartTable:
                    np.array([s.vertices is not None for s in shapes], dtype=bool),
                    np.array([s.kind in PRISMS for s in shapes], dtype=bool),
                    np.array([s.kind == "box" for s in shapes], dtype=bool),
+                   np.array([s.kind in CURVED for s in shapes], dtype=bool),
                    np.array([s.margin for s in shapes], dtype=float),
                    tuple(p.obj for p in parts))
 

@@ -19,7 +19,7 @@ import numpy as np
 from tampcli.geometry import certify, prism, transforms
 from tampcli.geometry.broad import PartTable
 from tampcli.geometry.certify import Solids
-from tampcli.geometry.narrow import TOLERANCE, Placed, certified, no_fcl, rounded
+from tampcli.geometry.narrow import CURVED, TOLERANCE, Placed, certified, no_fcl, rounded
 from tampcli.geometry.parts import Part
 
 SCALAR_PAIRS = 8  # groups of at most this many pairs skip the array set-up (measured)
@@ -154,6 +154,8 @@ class Batch:
         normal = np.zeros((k, 3))
         done = np.zeros(k, dtype=bool)  # certified answers
         asked = self._closed_forms(wa, a, wb, b, dist, p1, p2, normal, done)
+        if self.checker.coal is not None:  # coal answers them (`_certified`)
+            asked &= ~(ta.curved[ia] | tb.curved[ib])
         found = self._fcl(asked, ra, xa, rb, xb, a, b, dist, p1, p2)
         diff = p2 - p1
         norm = np.linalg.norm(diff, axis=1)
@@ -287,7 +289,8 @@ class Batch:
                 answer = prism.distance(Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t]))
             if answer is None:
                 raw = None
-                if not (ta.box[ja] and tb.box[jb]
+                if not (self.checker.coal is not None and (ta.curved[ja] or tb.curved[jb])) and not (
+                        ta.box[ja] and tb.box[jb]
                         and no_fcl(Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t]))):
                     d = fcl_distance(request, pa.obj, pb_.obj, rot[t], pos[t], result)
                     if d is not None:
@@ -307,9 +310,14 @@ class Batch:
 
     def _certified(self, raw, pa: Part, wa, pb_: Part, wb):
         """narrow.certified of FCL's answer (in the world) for one pair, asking coal
-        (coal_query.py) if it fails the check."""
+        (coal_query.py) if it fails the check; of coal's for a curved pair, which FCL
+        was not asked (narrow.CURVED)."""
         a, b = Placed(pa.shape, wa), Placed(pb_.shape, wb)
-        return certified(raw, a, b, self.checker.coal)
+        coal = self.checker.coal
+        if coal is not None and raw is None and (pa.shape.kind in CURVED
+                                                 or pb_.shape.kind in CURVED):
+            return certified(coal(a, b), a, b)
+        return certified(raw, a, b, coal)
 
 
 def _relative(ra, xa, rb, xb):
