@@ -10,9 +10,8 @@ each step's kind adds its rows (kinds/*.py: final_rows, keyframe_rows).
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 import math
+from dataclasses import dataclass, field
 
 import numpy as np
 
