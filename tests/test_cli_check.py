@@ -251,3 +251,21 @@ def test_a_movable_mesh_must_start_unturned_and_centred_on_its_origin(cli, tmp_p
     assert "a movable mesh's origin must be the centre of its bounding box" in based.err
     assert "(0.0000, 0.0000, 0.0300) m from it" in based.err
     assert cli("check", *_blind7(tmp_path, "p01")).code == 0
+
+
+def test_a_turned_robot_base_is_shown_with_its_yaw(cli):
+    """blind9 p03: `base = [0, 0, 0, 1.5708]` was shown as `base 0 0 0` and as
+    [0.0, 0.0, 0.0] in the JSON, the yaw the arm is loaded with dropped from both."""
+    folder = ROOT / "problems" / "blind9" / "p03"
+    files = (folder / "domain.pddl", folder / "p03.pddl")
+    run = cli("check", *files)
+    assert run.code == 0, run.err
+    assert _has_row(run.out, "base", "0 0 0, yaw 90.0°"), run.out
+    base = json.loads(cli("check", *files, "--json").out)["scene"]["robot"]["base"]
+    assert len(base) == 7 and base[:5] == [0.0] * 5
+    assert abs(base[5] - 0.5 ** 0.5) < 1e-5 and abs(base[6] - 0.5 ** 0.5) < 1e-5
+    straight = cli("check", GEO / "domain.pddl", GEO / "p01.pddl")
+    assert _has_row(straight.out, "base", "0 0 0"), straight.out
+    base = json.loads(cli("check", GEO / "domain.pddl", GEO / "p01.pddl",
+                          "--json").out)["scene"]["robot"]["base"]
+    assert base == [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]

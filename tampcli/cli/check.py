@@ -233,7 +233,7 @@ def _scene_tables(scene: dict) -> list[Table]:
     if robot:
         table.add_row("robot", f"{robot.get('model')} ({len(robot.get('joints', []))} joints, "
                                f"tool {robot.get('tool_link')})")
-        table.add_row("base", _xyz(robot.get("base", ())))
+        table.add_row("base", _pose(robot.get("base", ())))
     if scene.get("modes"):
         table.add_row("modes", str(scene["modes"]))
     if "support" in scene:
@@ -338,6 +338,12 @@ def _size(body: dict) -> str:
 
 def _xyz(values) -> str:
     return " ".join(_mm(v) for v in values)
+
+
+def _pose(values) -> str:
+    """[x, y, z] or [x, y, z, qx, qy, qz, qw] as the position, then the turn when there is one."""
+    rotation = _rotation(values[3:7]) if len(values) == 7 else "-"
+    return _xyz(values[:3]) + ("" if rotation == "-" else f", {rotation}")
 
 
 def _mm(value: float) -> str:

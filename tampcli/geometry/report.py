@@ -42,7 +42,8 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, problem_path, scene_
         warnings += _reach_warnings(world, scene, _goal_names(problem.goal))
         robot = {
             "model": scene.robot.model,
-            "base": [round(v, 6) for v in scene.robot.base[:3]],
+            # The whole pose, as a body's: a turned base turns the arm and its reach.
+            "base": _round(scene.robot.base),
             "tool_link": world.tool_link,
             "joints": list(world.joint_names),
             "lower": _round(world.lower),
