@@ -35,10 +35,13 @@ Rules (a penetration is a signed distance below -1 mm):
    A pushed object keeps its height and stays upright (1 mm, 1 deg).
 3. support -- at each boundary, every object not held rests on the top face
    of some body (its bottom within 5 mm of that face, its centre over it).
-4. goal -- every goal atom (pred x y) with x a movable object and y a region:
+4. goal -- every goal atom (pred x y) with x a movable object and y a region
+   (x and y: the object and target arguments of the place or push action that
+   adds pred, where the domain and modes files say so; else pred's first two):
    x's whole footprint (its projection on the region's support) lies inside
    the region's rectangle (1 mm tolerance) and its bottom is within 5 mm of
-   the support's top face; with y a body: the same against y's top face.
+   the support's top face; with y a body: the same against y's top face (a
+   cylinder's round top exactly: the ring of x's footprint within its radius).
    `and` needs every part, `or` any one; other goal atoms are symbolic.
 5. limits -- every waypoint within the URDF joint limits.
 
@@ -120,18 +123,50 @@ def _limits(rp: Replay, names: list[str], traj: np.ndarray) -> list[Violation]:
     return out
 
 
-def goal_failures(rp: Replay, goal, movable: list[str]) -> list[str]:
-    """Messages for the goal atoms that do not hold geometrically."""
+def goal_roles(domain: Path, modes: Path) -> dict[str, tuple[int, int]]:
+    """predicate -> (argument of the object, argument of where it rests) for the
+    predicates a place (`on`) or push (`to`) action of the modes file adds: the goal
+    atom (capped jar lid) of a `cap` that puts ?l on ?j is lid on jar, not the
+    first argument on the second. Read from the domain's own text."""
+    table = tomllib.loads(modes.read_text())
+    roles: dict[str, tuple[int, int]] = {}
+    for part in _sexp(domain.read_text()):
+        if not (isinstance(part, list) and len(part) > 1 and part[0] == ":action"):
+            continue
+        spec = table.get(part[1])
+        if not isinstance(spec, dict) or spec.get("mode") not in ("place", "push"):
+            continue
+        obj, target = spec.get("object"), spec.get("on") or spec.get("to")
+        fields = dict(zip(part[2::2], part[3::2], strict=False))
+        effect = fields.get(":effect", [])
+        atoms = effect[1:] if effect and effect[0] == "and" else [effect]
+        for atom in atoms:
+            if atom and isinstance(atom[0], str) and atom[0] not in ("not", "forall", "when") \
+                    and obj in atom[1:] and target in atom[1:]:
+                roles.setdefault(atom[0], (atom.index(obj) - 1, atom.index(target) - 1))
+    return roles
+
+
+def goal_failures(rp: Replay, goal, movable: list[str],
+                  roles: dict[str, tuple[int, int]] | None = None) -> list[str]:
+    """Messages for the goal atoms that do not hold geometrically. `roles`
+    (goal_roles) says which argument rests on which; without it, (pred x y)."""
     if not goal or not isinstance(goal[0], str):
         return []
     if goal[0] == "and":
-        return [m for part in goal[1:] for m in goal_failures(rp, part, movable)]
+        return [m for part in goal[1:] for m in goal_failures(rp, part, movable, roles)]
     if goal[0] == "or":
-        parts = [goal_failures(rp, part, movable) for part in goal[1:]]
+        parts = [goal_failures(rp, part, movable, roles) for part in goal[1:]]
         return [] if any(not p for p in parts) else ["no part of (or ...) holds: " + parts[0][0]]
-    if len(goal) != 3 or goal[1] not in movable or not all(isinstance(g, str) for g in goal):
+    if not all(isinstance(g, str) for g in goal):
         return []
-    x, y = goal[1], goal[2]
+    i, j = (roles or {}).get(goal[0], (0, 1))
+    args = goal[1:]
+    if max(i, j) >= len(args) or (goal[0] not in (roles or {}) and len(args) != 2):
+        return []
+    x, y = args[i], args[j]
+    if x not in movable:
+        return []
     pts, bottom = rp.footprint(x)
     if y in rp.regions:
         reg = rp.regions[y]
@@ -143,8 +178,11 @@ def goal_failures(rp: Replay, goal, movable: list[str]) -> list[str]:
         frame, half, top = rp.top_face(y)
     else:
         return []
-    local = (pts - frame[:2, 3]) @ frame[:2, :2]
-    over = float(np.max(np.abs(local) - half))
+    if y in rp.bodies and rp.info[y]["shape"] == "cylinder":  # its round top, exactly
+        over = float(np.max(np.linalg.norm(pts - frame[:2, 3], axis=1))) - rp.info[y]["size"][0]
+    else:
+        local = (pts - frame[:2, 3]) @ frame[:2, :2]
+        over = float(np.max(np.abs(local) - half))
     msgs = []
     if over > TOL_POS:
         msgs.append(f"({' '.join(goal)}): {x}'s footprint sticks out of {y} by {over * 1000:.1f} mm")
@@ -170,7 +208,17 @@ def _push_actions(sol: dict, solution: Path | None) -> set[str] | None:
             if isinstance(spec, dict) and spec.get("mode") == "push"}
 
 
-def check_replay(rp: Replay, sol: dict, goal, pushes: set[str] | None = None) -> list[Violation]:
+def _goal_roles(sol: dict, solution: Path) -> dict[str, tuple[int, int]] | None:
+    """goal_roles of the solution's domain and modes files (None when either is not
+    found: the goal is read as (pred x y))."""
+    try:
+        return goal_roles(_resolve(sol["domain"], solution), _resolve(sol["modes"], solution))
+    except (KeyError, TypeError, FileNotFoundError):
+        return None
+
+
+def check_replay(rp: Replay, sol: dict, goal, pushes: set[str] | None = None,
+                 roles: dict[str, tuple[int, int]] | None = None) -> list[Violation]:
     names = sol["robot"]["joints"]
     traj = np.array(sol["trajectory"], dtype=float)
     phases = sol["phases"]
@@ -231,7 +279,7 @@ def check_replay(rp: Replay, sol: dict, goal, pushes: set[str] | None = None) ->
     out += [v for _, v in sorted(worst.values(), key=lambda dv: dv[0])]
     for n in movable:
         rp.place(n, poses[n][-1])
-    out += [Violation("goal", "end", m) for m in goal_failures(rp, goal, movable)]
+    out += [Violation("goal", "end", m) for m in goal_failures(rp, goal, movable, roles)]
     return out
 
 
@@ -258,7 +306,8 @@ def check_solution(solution: Path, scene: Path | None = None,
     problem = Path(problem) if problem else _resolve(sol["problem"], Path(solution))
     replay = Replay(scene)
     try:
-        return check_replay(replay, sol, read_goal(problem), _push_actions(sol, Path(solution)))
+        return check_replay(replay, sol, read_goal(problem), _push_actions(sol, Path(solution)),
+                            _goal_roles(sol, Path(solution)))
     finally:
         replay.close()
 

@@ -191,3 +191,28 @@ def test_a_sphere_in_the_scene(solved, tmp_path):
         assert check_replay(replay, copy.deepcopy(sol), read_goal(problem)) == []
     finally:
         replay.close()
+
+
+@pytest.mark.parametrize("dx, holds", [
+    (0.0, True),      # lid (r 3.1 cm) centred on the jar (r 3.6 cm)
+    (0.0055, True),   # 5.5 mm off the axis: 0.5 mm over the rim, within 1 mm
+    (0.0065, False),  # 1.5 mm over the rim
+])
+def test_a_goal_atom_is_read_by_the_roles_of_the_action_that_adds_it(dx, holds):
+    """blind9 p02: the goal (capped jar-a lid-a) is made by `cap`, which puts its ?l
+    on its ?j (modes.toml): the lid must lie on the jar's round top, not the jar on
+    the lid (goal_roles), the round top measured as a disk."""
+    from tests.robustness.checker import goal_roles
+
+    folder = ROOT / "problems" / "blind9" / "p02"
+    roles = goal_roles(folder / "domain.pddl", folder / "modes.toml")
+    assert roles == {"capped": (1, 0)}
+    replay = Replay(folder / "p02.scene.toml")
+    try:
+        replay.place("lid-a", matrix([0.3338 + dx, 0.1349, 0.094 + 0.011], [0, 0, 0, 1]))
+        found = goal_failures(replay, ["capped", "jar-a", "lid-a"], ["jar-a", "lid-a"], roles)
+        plain = goal_failures(replay, ["capped", "jar-a", "lid-a"], ["jar-a", "lid-a"])
+    finally:
+        replay.close()
+    assert (found == []) == holds, found
+    assert plain  # read as (pred x y), the jar would have to lie on the lid
