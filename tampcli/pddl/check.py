@@ -138,6 +138,12 @@ class _DomainChecker:
                 continue
             seen[typed.name] = typed
         for typed in self.domain.types:
+            if typed.name in typed.types and typed.name != OBJECT:
+                self.warnings.append(
+                    f"{located(self.domain.path, typed.span)}: type {typed.name} is declared "
+                    f"a subtype of itself (in `{typed.name} ... - {typed.name}`, every name "
+                    f"before the dash is a subtype of the type after it); it is read as a "
+                    f"subtype of object")
             for parent in typed.types:
                 if parent != OBJECT and parent not in seen:
                     raise self.src.error(f"type {typed.name} has an undeclared parent type "

@@ -88,3 +88,24 @@ def test_stats_line_ends_with_a_newline_in_a_real_process():
     assert run.returncode == 0, run.stderr
     assert run.stderr.endswith(", generated 7\n")
     assert run.stdout.endswith("; cost = 2 (unit cost)\n")
+
+
+def test_a_type_declared_a_subtype_of_itself_is_warned_about(cli, tmp_path):
+    """`(:types thing zone puck - thing)` (blind9's author wrote a hierarchy so):
+    thing is no type of its own above the others; both front ends warn, at the
+    name's place, and read it under object."""
+    domain = tmp_path / "domain.pddl"
+    domain.write_text("(define (domain d) (:requirements :typing)\n"
+                      "  (:types thing zone puck - thing)\n"
+                      "  (:predicates (at ?p - puck ?z - zone))\n"
+                      "  (:action put :parameters (?p - puck ?z - zone)\n"
+                      "    :precondition () :effect (at ?p ?z)))\n")
+    problem = tmp_path / "p.pddl"
+    problem.write_text("(define (problem p) (:domain d) (:objects p1 - puck z1 - zone)\n"
+                       "  (:init) (:goal (at p1 z1)))\n")
+    check, plan = _front_ends(cli, domain, problem)
+    warnings = json.loads(check.out)["warnings"]
+    assert len(warnings) == 1 and warnings[0].startswith(f"{domain}:2:11: type thing is ")
+    assert "subtype of itself" in warnings[0] and warnings[0] in plan.err
+    solved = cli("plan", domain, problem, "--json")
+    assert json.loads(solved.out)["status"] == "solved" and "(put p1 z1)" in solved.out
