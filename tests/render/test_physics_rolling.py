@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import shutil
 
-import numpy as np
 import pybullet as pb
 from render_solutions import PANDA, panda_solution
 
