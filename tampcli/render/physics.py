@@ -103,8 +103,10 @@ class _Run:
     def _arrive(self, q) -> None:
         """Hold still at q until the joints are there (grasps and places happen at rest)."""
         q = np.asarray(q)
-        for _ in range(int(round(self.settings.arrive_seconds * self.settings.hz))):
-            if np.max(np.abs(self.sim.joint_positions() - q)) < self.settings.arrive_tolerance:
+        settings = self.settings
+        for _ in range(int(round(settings.arrive_seconds * settings.hz))):
+            if np.max(np.abs(self.sim.joint_positions() - q)) < settings.arrive_tolerance \
+                    and np.max(np.abs(self.sim.joint_velocities())) < settings.arrive_speed:
                 return
             self._step(q, track=False)
 

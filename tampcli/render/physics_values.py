@@ -23,7 +23,12 @@ class PhysicsSettings:
     friction: float = 0.8  # lateral, on every body and link (a contact gets 0.8 * 0.8)
     restitution: float = 0.0  # nothing bounces
     spinning_friction: float = 0.001
-    rolling_friction: float = 0.0
+    # Rolling resistance, on every body and link. Bullet gives a contact r_a f_b + r_b f_a
+    # (1.6 x this) as a lever arm: a resisting torque of lever x normal force, 0.1 mm
+    # here, the least of the engineering tables (hardened steel balls on steel; wood,
+    # plastic and rubber roll 0.5-2 mm and more). At 0 a ball set down at 0.2 mm/s rolls
+    # on for good (blind9 p08); at 0.1 mm a 2.6 cm ball at 1 cm/s stops within 2 mm.
+    rolling_friction: float = 6.25e-5
     arm_force: float = 200.0  # N m: stronger than gravity on a Panda's links
     planar_force: float = 50.0  # N for the planar robot's prismatic joints
     # Position gain of the joint motors: PyBullet's 0.1 lags a Panda 0.03 rad behind
@@ -35,6 +40,7 @@ class PhysicsSettings:
     # tool stood 0.4-0.6 mm off at each, as much as a tight pack's gaps leave (blind8
     # p06: 1 mm); at 2e-4, 0.1 mm, reached within 0.1 s more per replay.
     arrive_tolerance: float = 2e-4
+    arrive_speed: float = 1e-3  # rad/s (m/s): and still, every joint slower than this
     arrive_seconds: float = 1.0  # the most the robot is given to come to rest there
     grip_seconds: float = 0.25  # fingers closing before the grasp takes hold
     settle_after_place: float = 0.5  # seconds the robot waits after letting go

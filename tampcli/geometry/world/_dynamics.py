@@ -183,6 +183,11 @@ class Dynamics:
         states = self._pb.getJointStates(self._robot, self._joints, physicsClientId=self._client)
         return np.array([s[0] for s in states])
 
+    def joint_velocities(self) -> np.ndarray:
+        """The driven joints' velocities now (rad/s, or m/s for a sliding joint), in q order."""
+        states = self._pb.getJointStates(self._robot, self._joints, physicsClientId=self._client)
+        return np.array([s[1] for s in states])
+
     def finger_positions(self) -> np.ndarray:
         """The finger joints' values now (m each; empty without fingers)."""
         if not self._fingers:
