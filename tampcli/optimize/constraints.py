@@ -98,45 +98,55 @@ def _pair_jac(P: PoseX, gp: np.ndarray, Q: PoseX, gq: np.ndarray):
     return jac
 
 
-_SIGNS = np.array([(a, b) for a in (-1.0, 1.0) for b in (-1.0, 1.0)])  # corner order
-
-
-def _corner_array(P: PoseX, info: BodyInfo) -> np.ndarray:
-    hx, hy = info.half[0], info.half[1]
-    return (P.pos[:2] + np.outer(_SIGNS[:, 0] * hx, P.ax[:2])
-            + np.outer(_SIGNS[:, 1] * hy, P.ay[:2]))
-
-
 def _sat(P: PoseX, pinfo: BodyInfo, Q: PoseX, qinfo: BodyInfo):
     """Separation of two box footprints: the largest gap along an edge normal of either.
 
     Positive: apart by at least that much along that axis; negative: minus the
     penetration depth (separating axis theorem, exact for convex polygons).
     Returns (value, d/d v_P (12,), d/d v_Q (12,)).
+
+    In Python floats: it runs for every pair of placed boxes at every evaluation of
+    every NLP with placements, and numpy's per-call cost on 4 x 2 arrays was most of
+    its time (arm-sort: 51,000 calls per three skeletons).
     """
-    cp, cq = _corner_array(P, pinfo), _corner_array(Q, qinfo)
-    axes = np.array([P.ax[:2], P.ay[:2], Q.ax[:2], Q.ay[:2]])
-    pp, pq = cp @ axes.T, cq @ axes.T  # (corner, axis)
+    vp, vq = P.v.tolist(), Q.v.tolist()
+    cp = _corners(vp, pinfo.half[0], pinfo.half[1])
+    cq = _corners(vq, qinfo.half[0], qinfo.half[1])
+    axes = ((vp[3], vp[4]), (vp[6], vp[7]), (vq[3], vq[4]), (vq[6], vq[7]))
+    proj_p = [[x * ux + y * uy for x, y in cp] for ux, uy in axes]
+    proj_q = [[x * ux + y * uy for x, y in cq] for ux, uy in axes]
     # Along -u first: on a tie (coincident footprints, as at the centred start) P
     # moves along +x, the way the centre-distance rows it replaced pushed it.
-    vals = np.concatenate([pp.min(axis=0) - pq.max(axis=0), pq.min(axis=0) - pp.max(axis=0)])
-    best = int(np.argmax(vals))
+    vals = [min(a) - max(b) for a, b in zip(proj_p, proj_q, strict=True)]
+    vals += [min(b) - max(a) for a, b in zip(proj_p, proj_q, strict=True)]
+    best = max(range(8), key=vals.__getitem__)  # the first of equal ones, as argmax
     sign = -1.0 if best < 4 else 1.0
     i = best % 4
-    n = sign * axes[i]
-    ia = int(np.argmax(cp @ n))
-    ib = int(np.argmin(cq @ n))
-    a_j = corner_jac(*_SIGNS[ia], pinfo.half[0], pinfo.half[1])
-    b_j = corner_jac(*_SIGNS[ib], qinfo.half[0], qinfo.half[1])
-    gp, gq = -n @ a_j, n @ b_j
+    nx, ny = sign * axes[i][0], sign * axes[i][1]
+    along_p = [x * nx + y * ny for x, y in cp]
+    along_q = [x * nx + y * ny for x, y in cq]
+    ia = max(range(4), key=along_p.__getitem__)
+    ib = min(range(4), key=along_q.__getitem__)
+    gp, gq = np.zeros(12), np.zeros(12)
+    for g, (a, b), half, scale in ((gp, _SIGN_PAIRS[ia], pinfo.half, -1.0),
+                                   (gq, _SIGN_PAIRS[ib], qinfo.half, 1.0)):
+        g[0], g[1] = scale * nx, scale * ny
+        g[3], g[4] = scale * nx * a * half[0], scale * ny * a * half[0]
+        g[6], g[7] = scale * nx * b * half[1], scale * ny * b * half[1]
     col = 3 if i % 2 == 0 else 6
-    dn = np.zeros(12)
-    dn[col:col + 2] = sign * (cq[ib] - cp[ia])
-    if i < 2:
-        gp = gp + dn
-    else:
-        gq = gq + dn
+    g = gp if i < 2 else gq
+    g[col] += sign * (cq[ib][0] - cp[ia][0])
+    g[col + 1] += sign * (cq[ib][1] - cp[ia][1])
     return float(vals[best]), gp, gq
+
+
+_SIGN_PAIRS = tuple((a, b) for a in (-1.0, 1.0) for b in (-1.0, 1.0))  # corner order
+
+
+def _corners(v: list, hx: float, hy: float) -> list[tuple[float, float]]:
+    """The footprint corners (x, y) of pose v (PoseX.v as a list), in _SIGN_PAIRS' order."""
+    return [(v[0] + a * hx * v[3] + b * hy * v[6], v[1] + a * hx * v[4] + b * hy * v[7])
+            for a, b in _SIGN_PAIRS]
 
 
 def _rect_point(R: PoseX, rinfo: BodyInfo, c: np.ndarray):
