@@ -206,7 +206,8 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
         from tampcli.bnb.eliminate import ELIMINATION_SHARE, eliminate_useless
-        from tampcli.bnb.lessons import teacher
+        from tampcli.bnb.lessons import first_move_proofs, teacher
+        from tampcli.optimize.bodies import body_info
         from tampcli.search.eliminate import without_step
         from tampcli.search.learned import LearningSource
         from tampcli.search.timed import TimedSource
@@ -238,6 +239,10 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
     source = LearningSource(inputs.task, make_topk, moves, make_regrasps=make_regrasps)
 
     learn = teacher(source, inputs.task, modes, movable)
+    with timers.stage("setup"):  # proofs before any skeleton (bnb/lessons.py)
+        infos = {name: body_info(inputs.scene.body(name), geometry.world) for name in movable}
+        source.require_moved(first_move_proofs(inputs.task, modes, inputs.scene, infos,
+                                               options.optimize))
 
     def heard(event) -> None:
         # With an answer the NLPs stop where the search does: the reserve is action

@@ -1,9 +1,17 @@
-"""What a failed stage teaches the skeleton source (search/learned.py).
+"""What geometry teaches the skeleton source (search/learned.py).
 
-Two lessons, both read off the stage's result:
+Before any skeleton, `first_move_proofs`: the actions that cannot move their
+object from its start pose into their target whatever came before (a planar push
+whose object's every face's friction cone misses the target), each a proved
+precondition "the object was moved before" (`LearningSource.require_moved`).
+
+Then three lessons of a failed stage, both read off the stage's result:
 
 - a body in the way (its worst row names a movable body: optimize/blockers.py)
   becomes a learned precondition: the skeletons that move it first come next;
+- a push (a kind that moves within one face's friction cone) that ran into a
+  body that never moves, or out of every cone, is suspected: the skeletons
+  without that ground action come first (`LearningSource.suspect`, an ordering);
 - an action proved impossible in any skeleton (`result.impossible`: no grasp of
   the object fits, its footprint fits the region in no orientation) takes
   every ground action of that schema on that object (into that region) out
@@ -15,7 +23,41 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from tampcli.optimize.blockers import blocker_of
+from tampcli.optimize.blockers import blocker_of, fixed_obstacle_of
+from tampcli.optimize.kinds import KINDS
+from tampcli.optimize.push_reach import first_push_blocked
+from tampcli.search.learned import Blocker
+
+
+def first_move_proofs(task, modes, scene, infos, options) -> frozenset[Blocker]:
+    """Blocker(object, action) for each ground action that cannot move its object from
+    the start pose into its target region: for the planar robot, an action of a kind
+    that moves only within a face's friction cone (ModeKind.within_cone) and no face's
+    cone leads there (push_reach.first_push_blocked). In every skeleton, that action
+    needs its object moved before it. `infos`: the movable bodies' bodies.BodyInfo by
+    name; `options`: optimize.options.OptimizeOptions. Each (kind, object, region) is
+    judged once."""
+    if scene.robot.model != "planar":
+        return frozenset()
+    regions = {r.name: r for r in scene.regions}
+    judged: dict[tuple[str, str, str], bool] = {}
+    found = set()
+    for op in task.operators:
+        mode = modes.get_mode(op.action)
+        roles = mode.bind(op.args) if mode.geometric else {}
+        obj, to = roles.get("object"), roles.get("to")
+        if obj not in infos or to not in regions:
+            continue
+        key = (mode.kind, obj, to)
+        if key not in judged:
+            judged[key] = KINDS[mode.kind].within_cone and \
+                first_push_blocked(infos[obj], regions[to], options.waypoints)
+        if judged[key]:
+            found.add(Blocker(obj, op.name))
+    return frozenset(found)
+
+
+_PUSH_RULE = "motion not into the pushed face"
 
 
 def teacher(source, task, modes, movable: frozenset[str]) -> Callable[[Any], None]:
@@ -27,10 +69,20 @@ def teacher(source, task, modes, movable: frozenset[str]) -> Callable[[Any], Non
         bound = modes.get_mode(action).bind(op.args)
         return bound["object"] == obj and (role is None or bound[role[0]] == role[1])
 
+    kinds = {op.name: KINDS[modes.get_mode(op.action).kind] for op in task.operators}
+
     def learn(result) -> None:
-        blocker = blocker_of(getattr(result, "worst_constraint", None), movable)
+        worst = getattr(result, "worst_constraint", None)
+        blocker = blocker_of(worst, movable)
         if blocker is not None:
             source.learn(blocker)
+        # A push (within one face's cone) that runs into a wall, or out of every cone:
+        # skeletons without that push come first (an ordering: the NLPs are local).
+        pushed = fixed_obstacle_of(worst, movable)
+        if pushed is None and blocker is not None and _PUSH_RULE in worst:
+            pushed = blocker.action
+        if pushed is not None and getattr(kinds.get(pushed), "within_cone", False):
+            source.suspect(pushed)
         impossible = getattr(result, "impossible", None)
         if impossible is not None:
             source.forbid_operators(frozenset(
