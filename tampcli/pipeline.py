@@ -238,11 +238,12 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
 
     source = LearningSource(inputs.task, make_topk, moves, make_regrasps=make_regrasps)
 
-    learn = teacher(source, inputs.task, modes, movable)
     with timers.stage("setup"):  # proofs before any skeleton (bnb/lessons.py)
-        infos = {name: body_info(inputs.scene.body(name), geometry.world) for name in movable}
-        source.require_moved(first_move_proofs(inputs.task, modes, inputs.scene, infos,
-                                               options.optimize))
+        infos = {b.name: body_info(b, geometry.world) for b in inputs.scene.bodies}
+        source.require_moved(first_move_proofs(
+            inputs.task, modes, inputs.scene, {n: infos[n] for n in movable},
+            options.optimize))
+    learn = teacher(source, inputs.task, modes, movable, inputs.scene, infos)
 
     def heard(event) -> None:
         # With an answer the NLPs stop where the search does: the reserve is action

@@ -23,9 +23,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from tampcli.optimize.blockers import blocker_of, fixed_obstacle_of
+from tampcli.optimize.blockers import blocker_of, fixed_body_of, fixed_obstacle_of
 from tampcli.optimize.kinds import KINDS
-from tampcli.optimize.push_reach import first_push_blocked
+from tampcli.optimize.push_reach import first_push_blocked, line_meets
 from tampcli.search.learned import Blocker
 
 
@@ -60,8 +60,12 @@ def first_move_proofs(task, modes, scene, infos, options) -> frozenset[Blocker]:
 _PUSH_RULE = "motion not into the pushed face"
 
 
-def teacher(source, task, modes, movable: frozenset[str]) -> Callable[[Any], None]:
-    """`learn(result)` for branch and bound: `source` a LearningSource over `task`."""
+def teacher(source, task, modes, movable: frozenset[str], scene=None,
+            infos=None) -> Callable[[Any], None]:
+    """`learn(result)` for branch and bound: `source` a LearningSource over `task`.
+    With the planar robot's `scene` and every body's BodyInfo (`infos`), a push that
+    ran into a fixed body also orders the other pushes of its object whose straight
+    line from the object's start crosses that body after a move of the object."""
 
     def matches(op, action: str, obj: str, role) -> bool:
         if op.action != action:
@@ -83,9 +87,39 @@ def teacher(source, task, modes, movable: frozenset[str]) -> Callable[[Any], Non
             pushed = blocker.action
         if pushed is not None and getattr(kinds.get(pushed), "within_cone", False):
             source.suspect(pushed)
+            wall = fixed_body_of(worst, movable)
+            if wall is not None and infos is not None and wall in infos:
+                beyond = _beyond(task, modes, scene, infos, pushed, infos[wall])
+                if beyond:
+                    source.learn(*beyond)
         impossible = getattr(result, "impossible", None)
         if impossible is not None:
             source.forbid_operators(frozenset(
                 op.name for op in task.operators if matches(op, *impossible)))
 
     return learn
+
+
+def _beyond(task, modes, scene, infos, pushed: str, wall) -> list[Blocker]:
+    """Blocker(object, push) for every push of `pushed`'s object (the same kind) into a
+    region whose straight line from the object's start meets `wall`, swept by the
+    pusher beside the object: from its start, that push likely runs into the wall
+    too; skeletons that move the object elsewhere first come next (an ordering)."""
+    ops = {op.name: op for op in task.operators}
+    mode = modes.get_mode(ops[pushed].action)
+    obj = mode.bind(ops[pushed].args)["object"]
+    info, regions = infos.get(obj), {r.name: r for r in scene.regions}
+    if info is None or scene.robot.model != "planar":
+        return []
+    clearance = scene.robot.radius + info.radius
+    found = []
+    for op in task.operators:
+        other = modes.get_mode(op.action)
+        if other.kind != mode.kind or not other.geometric:
+            continue
+        roles = other.bind(op.args)
+        to = regions.get(roles["to"])
+        if roles["object"] == obj and to is not None \
+                and line_meets(info.pose[:2], to, wall, clearance):
+            found.append(Blocker(obj, op.name))
+    return found

@@ -54,10 +54,14 @@ def fixed_obstacle_of(worst: str | None, movable: frozenset[str]) -> str | None:
     (whose motion keeps to one face's friction cone) that reads as "this push runs
     into the scene's fixed geometry wherever it stands in a skeleton": a guess, which
     bnb/lessons.py turns into an ordering (LearningSource.suspect), never a proof."""
-    if not worst:
+    action = _ACTION.search(worst or "")
+    if action is None or fixed_body_of(worst, movable) is None:
         return None
-    action = _ACTION.search(worst)
-    found = _COLLISION.search(worst)
-    if action is None or found is None:
-        return None
-    return action.group(1) if found.group("b") not in movable else None
+    return action.group(1)
+
+
+def fixed_body_of(worst: str | None, movable: frozenset[str]) -> str | None:
+    """The body that never moves a collision row of `worst` names, else None."""
+    found = _COLLISION.search(worst or "")
+    return found.group("b") if found is not None and found.group("b") not in movable \
+        else None

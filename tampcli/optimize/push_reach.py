@@ -115,3 +115,22 @@ def first_push_blocked(info, region, waypoints: int) -> bool:
     drift = RIGID + 2 * STILL_OBJECT * HORIZON
     return not open_faces(info, (start, start), centre_box(info, region), drift,
                           cone_slack(waypoints))
+
+
+def line_meets(start, region, obstacle, clearance: float, samples: int = 64) -> bool:
+    """A guess, no proof: does the straight line from `start` (x, y) to the centre of
+    `region`, swept by a disk of radius `clearance` (the pusher and the object beside
+    it), meet the footprint of `obstacle` (a BodyInfo: an upright box or a disk)? A
+    push that ran into that obstacle on its way to one region likely runs into it on
+    the way to the others beyond it (bnb/lessons.py orders skeletons by this)."""
+    a = np.asarray(start, dtype=float)
+    b = np.asarray(region.center, dtype=float)
+    points = a + np.linspace(0.0, 1.0, samples)[:, None] * (b - a)
+    rel = points - np.array(obstacle.pose[:2])
+    if obstacle.disk:
+        gap = np.linalg.norm(rel, axis=1) - obstacle.half[0]
+    else:
+        local = rel @ _rot(obstacle.pose[3])  # into the obstacle's frame
+        out = np.maximum(np.abs(local) - np.array(obstacle.half[:2]), 0.0)
+        gap = np.linalg.norm(out, axis=1)
+    return bool((gap < clearance).any())

@@ -99,12 +99,13 @@ class LearningSource:
 
     # ------------------------------------------------------------ what bnb tells it
 
-    def learn(self, blocker: Blocker) -> bool:
-        """Take a finding in; True when it is new (the enumeration restarts)."""
-        if blocker in self.blockers:
+    def learn(self, blocker: Blocker, *more: Blocker) -> bool:
+        """Take findings in; True when one is new (the enumeration restarts, once)."""
+        new = frozenset((blocker, *more)) - self.blockers
+        if not new:
             return False
-        self.blockers = self.blockers | {blocker}
-        self.stats["learned"] += 1
+        self.blockers = self.blockers | new
+        self.stats["learned"] += len(new)
         self._recompile()
         self._restart(plain=False)
         return True

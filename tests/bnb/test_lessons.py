@@ -89,3 +89,28 @@ def test_the_teacher_suspects_a_push_into_a_wall_and_a_drag_but_not_a_pick(s04):
             "(margin 1 mm) by 1.0 cm")
     learn(SimpleNamespace(worst_constraint=pick))
     assert heard == []
+
+
+def test_a_push_into_a_wall_orders_the_pushes_beyond_it_from_the_same_start(s04):
+    """planar-s04: box3 starts east of two walls; pushed towards goal3 (west of them)
+    it ran into wall2. Its pushes into regions whose line from its start crosses
+    wall2 are learned to need a move first (an ordering); those on its side are not."""
+    inputs, _ = s04
+    with World(inputs.scene) as world:
+        infos = {b.name: body_info(b, world) for b in inputs.scene.bodies}
+    learned, suspected = [], []
+    source = SimpleNamespace(learn=lambda *b: learned.extend(b), suspect=suspected.append,
+                             forbid_operators=lambda names: None)
+    movable = frozenset(n for n, i in infos.items() if not i.fixed)
+    learn = teacher(source, inputs.task, inputs.modes, movable, inputs.scene, infos)
+    learn(SimpleNamespace(worst_constraint=(
+        "motion 5 before (push box3 home3 goal3 bench): collision planar_body vs wall2 "
+        "(margin 1 mm) by 6.0 cm")))
+    assert suspected == ["(push box3 home3 goal3 bench)"]
+    targets = {b.action.split()[3] for b in learned}
+    assert all(b.body == "box3" and b.action.startswith("(push box3 ") for b in learned)
+    assert {"goal3", "goal4", "home2"} <= targets  # all west of the walls
+    assert "home3" not in targets  # where it stands
+    regions = {r.name: r for r in inputs.scene.regions}
+    wall = infos["wall2"].pose[0]
+    assert all(regions[t].center[0] < wall for t in targets)

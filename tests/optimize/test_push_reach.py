@@ -154,3 +154,27 @@ def test_the_source_box_of_a_second_push_is_where_the_first_may_leave_it(planar_
     east = next(r for r in scene.regions if r.name == "east")
     assert (dst0[0] >= np.array(east.lower) + 0.03 - 1e-3 - 1e-9).all()  # half the box in
     assert (dst0[1] <= np.array(east.upper) - 0.03 + 1e-3 + 1e-9).all()
+
+
+def test_a_line_meets_a_wall_across_it_and_misses_one_beside_it():
+    from tampcli.optimize.push_reach import line_meets
+
+    wall = BodyInfo("w", "box", (0.01, 0.3, 0.05), True, (0.5, 0.0, 0.05, 0.0), True)
+    across = Region("across", "floor", (1.0, 0.0), (0.1, 0.1))
+    beside = Region("beside", "floor", (0.3, 0.6), (0.1, 0.1))
+    assert line_meets((0.0, 0.0), across, wall, 0.05)
+    assert not line_meets((0.0, 0.0), beside, wall, 0.05)
+    # Past the wall's end by less than the clearance: met; by more: missed.
+    above = Region("above", "floor", (1.0, 0.33), (0.1, 0.1))  # the wall ends at y = 0.3
+    assert line_meets((0.0, 0.33), above, wall, 0.05)
+    assert not line_meets((0.0, 0.42), Region("r", "floor", (1.0, 0.42), (0.1, 0.1)), wall,
+                          0.1)
+    # Turned a quarter, the same wall lies along x: the line along x at y = 0 runs in it.
+    turned = dataclasses.replace(wall, pose=(0.5, 0.0, 0.05, math.pi / 2))
+    assert line_meets((0.0, 0.4), Region("r", "floor", (1.0, 0.4), (0.1, 0.1)), turned,
+                      0.02) is False
+    assert line_meets((0.0, 0.0), across, turned, 0.02)
+    post = BodyInfo("p", "cylinder", (0.05, 0.05, 0.05), True, (0.5, 0.0, 0.05, 0.0), True)
+    assert line_meets((0.0, 0.0), across, post, 0.01)
+    assert not line_meets((0.0, 0.3), Region("r", "floor", (1.0, 0.3), (0.1, 0.1)), post,
+                          0.1)
