@@ -10,7 +10,8 @@ Then three lessons of a failed stage, both read off the stage's result:
 - a body in the way (its worst row names a movable body: optimize/blockers.py)
   becomes a learned precondition: the skeletons that move it first come next;
 - a push (a kind that moves within one face's friction cone) that ran into a
-  body that never moves, or out of every cone, is suspected: the skeletons
+  body that never moves, or out of every cone, or into a blocker already
+  learned (moved, and into the way), is suspected: the skeletons
   without that ground action come first (`LearningSource.suspect`, an ordering);
 - an action proved impossible in any skeleton (`result.impossible`: no grasp of
   the object fits, its footprint fits the region in no orientation) takes
@@ -78,12 +79,13 @@ def teacher(source, task, modes, movable: frozenset[str], scene=None,
     def learn(result) -> None:
         worst = getattr(result, "worst_constraint", None)
         blocker = blocker_of(worst, movable)
-        if blocker is not None:
-            source.learn(blocker)
-        # A push (within one face's cone) that runs into a wall, or out of every cone:
-        # skeletons without that push come first (an ordering: the NLPs are local).
+        again = blocker is not None and not source.learn(blocker)
+        # A push (within one face's cone) that runs into a wall, or out of every cone, or
+        # into a body it was already known to need moved first (moving it did not help:
+        # it was moved into the way, gen1 planar-s02's box2 in goal2): skeletons without
+        # that push come first (an ordering: the NLPs are local).
         pushed = fixed_obstacle_of(worst, movable)
-        if pushed is None and blocker is not None and _PUSH_RULE in worst:
+        if pushed is None and blocker is not None and (again or _PUSH_RULE in worst):
             pushed = blocker.action
         if pushed is not None and getattr(kinds.get(pushed), "within_cone", False):
             source.suspect(pushed)

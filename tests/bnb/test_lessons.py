@@ -71,7 +71,7 @@ def test_the_proofs_leave_the_pick_and_place_plans(s04):
 def test_the_teacher_suspects_a_push_into_a_wall_and_a_drag_but_not_a_pick(s04):
     inputs, infos = s04
     heard = []
-    source = SimpleNamespace(learn=lambda b: heard.append(("learn", b)),
+    source = SimpleNamespace(learn=lambda b: heard.append(("learn", b)) or True,
                              suspect=lambda n: heard.append(("suspect", n)),
                              forbid_operators=lambda names: heard.append(("forbid", names)))
     learn = teacher(source, inputs.task, inputs.modes, frozenset(infos))
@@ -99,7 +99,8 @@ def test_a_push_into_a_wall_orders_the_pushes_beyond_it_from_the_same_start(s04)
     with World(inputs.scene) as world:
         infos = {b.name: body_info(b, world) for b in inputs.scene.bodies}
     learned, suspected = [], []
-    source = SimpleNamespace(learn=lambda *b: learned.extend(b), suspect=suspected.append,
+    source = SimpleNamespace(learn=lambda *b: learned.extend(b) or True,
+                             suspect=suspected.append,
                              forbid_operators=lambda names: None)
     movable = frozenset(n for n, i in infos.items() if not i.fixed)
     learn = teacher(source, inputs.task, inputs.modes, movable, inputs.scene, infos)
@@ -114,3 +115,26 @@ def test_a_push_into_a_wall_orders_the_pushes_beyond_it_from_the_same_start(s04)
     regions = {r.name: r for r in inputs.scene.regions}
     wall = infos["wall2"].pose[0]
     assert all(regions[t].center[0] < wall for t in targets)
+
+
+def test_a_push_blocked_again_by_a_body_already_learned_is_suspected(s04):
+    """The first overlap teaches "move box2 first"; the same overlap again (box2 was
+    moved, into the way) suspects the push; a pick so blocked is not suspected."""
+    inputs, infos = s04
+    suspected = []
+    source = LearningSource(inputs.task, lambda t: TopK(t, loopless=True),
+                            lambda op: frozenset(op.args[:1]) & frozenset(infos))
+    source.suspect = suspected.append
+    learn = teacher(source, inputs.task, inputs.modes, frozenset(infos))
+    overlap = SimpleNamespace(worst_constraint="(push box3 home3 goal2 bench): overlaps box2 "
+                                               "by 0.5 cm")
+    learn(overlap)
+    assert suspected == [] and Blocker("box2", "(push box3 home3 goal2 bench)") \
+        in source.blockers
+    learn(overlap)
+    assert suspected == ["(push box3 home3 goal2 bench)"]
+    pick = SimpleNamespace(worst_constraint="motion 2 before (pick box3 home3): collision "
+                                            "planar_body vs box2 (margin 1 mm) by 1 cm")
+    learn(pick)
+    learn(pick)
+    assert suspected == ["(push box3 home3 goal2 bench)"]
