@@ -113,8 +113,10 @@ def first_push_blocked(info, region, waypoints: int) -> bool:
         return False
     start = np.array(info.pose[:2], dtype=float)
     drift = RIGID + 2 * STILL_OBJECT * HORIZON
+    # A motion gets up to four times `waypoints` segments (motion.segments_for): the
+    # slack of that many short ones, whatever this skeleton's push gets.
     return not open_faces(info, (start, start), centre_box(info, region), drift,
-                          cone_slack(waypoints))
+                          cone_slack(4 * waypoints))
 
 
 def line_meets(start, region, obstacle, clearance: float, samples: int = 64) -> bool:
