@@ -5,7 +5,7 @@ object from its start pose into their target whatever came before (a planar push
 whose object's every face's friction cone misses the target), each a proved
 precondition "the object was moved before" (`LearningSource.require_moved`).
 
-Then three lessons of a failed stage, both read off the stage's result:
+Then three lessons of a failed stage, each read off the stage's result:
 
 - a body in the way (its worst row names a movable body: optimize/blockers.py)
   becomes a learned precondition: the skeletons that move it first come next;
