@@ -11,7 +11,8 @@ Then three lessons of a failed stage, each read off the stage's result:
   becomes a learned precondition: the skeletons that move it first come next;
 - a push (a kind that moves within one face's friction cone) that ran into a
   body that never moves, or out of every cone, or into a blocker already
-  learned (moved, and into the way), is suspected: the skeletons
+  learned (moved, and into the way), or whose footprint stayed out of its
+  target region, is suspected: the skeletons
   without that ground action come first (`LearningSource.suspect`, an ordering);
 - an action proved impossible in any skeleton (`result.impossible`: no grasp of
   the object fits, its footprint fits the region in no orientation) takes
@@ -24,7 +25,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from tampcli.optimize.blockers import blocker_of, fixed_body_of, fixed_obstacle_of
+from tampcli.optimize.blockers import action_of, blocker_of, fixed_body_of, fixed_obstacle_of
 from tampcli.optimize.kinds import KINDS
 from tampcli.optimize.push_reach import first_push_blocked, line_meets
 from tampcli.search.learned import Blocker
@@ -59,6 +60,7 @@ def first_move_proofs(task, modes, scene, infos, options) -> frozenset[Blocker]:
 
 
 _PUSH_RULE = "motion not into the pushed face"
+_OUTSIDE = ": footprint outside region "
 
 
 def teacher(source, task, modes, movable: frozenset[str], scene=None,
@@ -87,6 +89,10 @@ def teacher(source, task, modes, movable: frozenset[str], scene=None,
         pushed = fixed_obstacle_of(worst, movable)
         if pushed is None and blocker is not None and (again or _PUSH_RULE in worst):
             pushed = blocker.action
+        if pushed is None and _OUTSIDE in (worst or ""):
+            # The object keeps its yaw: its footprint against the region is the same
+            # wherever the push stands in a skeleton (x-s18: 40 final-stage failures).
+            pushed = action_of(worst)
         if pushed is not None and getattr(kinds.get(pushed), "within_cone", False):
             source.suspect(pushed)
             wall = fixed_body_of(worst, movable)

@@ -65,3 +65,9 @@ def fixed_body_of(worst: str | None, movable: frozenset[str]) -> str | None:
     found = _COLLISION.search(worst or "")
     return found.group("b") if found is not None and found.group("b") not in movable \
         else None
+
+
+def action_of(worst: str | None) -> str | None:
+    """The first ground action a worst-row message names, else None."""
+    found = _ACTION.search(worst or "")
+    return found.group(1) if found is not None else None

@@ -89,6 +89,15 @@ def test_the_teacher_suspects_a_push_into_a_wall_and_a_drag_but_not_a_pick(s04):
             "(margin 1 mm) by 1.0 cm")
     learn(SimpleNamespace(worst_constraint=pick))
     assert heard == []
+    # A pushed footprint left out of its region (the object cannot turn): suspected; a
+    # place so failing is not (the rule is the pushes').
+    learn(SimpleNamespace(worst_constraint="(push box4 home4 home3 bench): footprint outside "
+                                           "region home3 by 0.1 cm"))
+    assert heard == [("suspect", "(push box4 home4 home3 bench)")]
+    heard.clear()
+    learn(SimpleNamespace(worst_constraint="(place box4 home3): footprint outside region "
+                                           "home3 by 0.1 cm"))
+    assert heard == []
 
 
 def test_a_push_into_a_wall_orders_the_pushes_beyond_it_from_the_same_start(s04):
