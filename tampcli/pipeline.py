@@ -206,7 +206,8 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
         from tampcli.bnb.eliminate import ELIMINATION_SHARE, eliminate_useless
-        from tampcli.bnb.lessons import teacher
+        from tampcli.bnb.lessons import first_move_proofs, teacher
+        from tampcli.optimize.bodies import body_info
         from tampcli.search.eliminate import without_step
         from tampcli.search.learned import LearningSource
         from tampcli.search.timed import TimedSource
@@ -237,7 +238,12 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
 
     source = LearningSource(inputs.task, make_topk, moves, make_regrasps=make_regrasps)
 
-    learn = teacher(source, inputs.task, modes, movable)
+    with timers.stage("setup"):  # proofs before any skeleton (bnb/lessons.py)
+        infos = {b.name: body_info(b, geometry.world) for b in inputs.scene.bodies}
+        source.require_moved(first_move_proofs(
+            inputs.task, modes, inputs.scene, {n: infos[n] for n in movable},
+            options.optimize))
+    learn = teacher(source, inputs.task, modes, movable, inputs.scene, infos)
 
     def heard(event) -> None:
         # With an answer the NLPs stop where the search does: the reserve is action

@@ -1,9 +1,19 @@
-"""What a failed stage teaches the skeleton source (search/learned.py).
+"""What geometry teaches the skeleton source (search/learned.py).
 
-Two lessons, both read off the stage's result:
+Before any skeleton, `first_move_proofs`: the actions that cannot move their
+object from its start pose into their target whatever came before (a planar push
+whose object's every face's friction cone misses the target), each a proved
+precondition "the object was moved before" (`LearningSource.require_moved`).
+
+Then three lessons of a failed stage, each read off the stage's result:
 
 - a body in the way (its worst row names a movable body: optimize/blockers.py)
   becomes a learned precondition: the skeletons that move it first come next;
+- a push (a kind that moves within one face's friction cone) that ran into a
+  body that never moves, or out of every cone, or into a blocker already
+  learned (moved, and into the way), or whose footprint stayed out of its
+  target region, is suspected: the skeletons
+  without that ground action come first (`LearningSource.suspect`, an ordering);
 - an action proved impossible in any skeleton (`result.impossible`: no grasp of
   the object fits, its footprint fits the region in no orientation) takes
   every ground action of that schema on that object (into that region) out
@@ -15,11 +25,50 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from tampcli.optimize.blockers import blocker_of
+from tampcli.optimize.blockers import action_of, blocker_of, fixed_body_of, fixed_obstacle_of
+from tampcli.optimize.kinds import KINDS
+from tampcli.optimize.push_reach import first_push_blocked, line_meets
+from tampcli.search.learned import Blocker
 
 
-def teacher(source, task, modes, movable: frozenset[str]) -> Callable[[Any], None]:
-    """`learn(result)` for branch and bound: `source` a LearningSource over `task`."""
+def first_move_proofs(task, modes, scene, infos, options) -> frozenset[Blocker]:
+    """Blocker(object, action) for each ground action that cannot move its object from
+    the start pose into its target region: for the planar robot, an action of a kind
+    that moves only within a face's friction cone (ModeKind.within_cone) and no face's
+    cone leads there (push_reach.first_push_blocked). In every skeleton, that action
+    needs its object moved before it. `infos`: the movable bodies' bodies.BodyInfo by
+    name; `options`: optimize.options.OptimizeOptions. Each (kind, object, region) is
+    judged once."""
+    if scene.robot.model != "planar":
+        return frozenset()
+    regions = {r.name: r for r in scene.regions}
+    judged: dict[tuple[str, str, str], bool] = {}
+    found = set()
+    for op in task.operators:
+        mode = modes.get_mode(op.action)
+        roles = mode.bind(op.args) if mode.geometric else {}
+        obj, to = roles.get("object"), roles.get("to")
+        if obj not in infos or to not in regions:
+            continue
+        key = (mode.kind, obj, to)
+        if key not in judged:
+            judged[key] = KINDS[mode.kind].within_cone and \
+                first_push_blocked(infos[obj], regions[to], options.waypoints)
+        if judged[key]:
+            found.add(Blocker(obj, op.name))
+    return frozenset(found)
+
+
+_PUSH_RULE = "motion not into the pushed face"
+_OUTSIDE = ": footprint outside region "
+
+
+def teacher(source, task, modes, movable: frozenset[str], scene=None,
+            infos=None) -> Callable[[Any], None]:
+    """`learn(result)` for branch and bound: `source` a LearningSource over `task`.
+    With the planar robot's `scene` and every body's BodyInfo (`infos`), a push that
+    ran into a fixed body also orders the other pushes of its object whose straight
+    line from the object's start crosses that body after a move of the object."""
 
     def matches(op, action: str, obj: str, role) -> bool:
         if op.action != action:
@@ -27,13 +76,58 @@ def teacher(source, task, modes, movable: frozenset[str]) -> Callable[[Any], Non
         bound = modes.get_mode(action).bind(op.args)
         return bound["object"] == obj and (role is None or bound[role[0]] == role[1])
 
+    kinds = {op.name: KINDS[modes.get_mode(op.action).kind] for op in task.operators}
+
     def learn(result) -> None:
-        blocker = blocker_of(getattr(result, "worst_constraint", None), movable)
-        if blocker is not None:
-            source.learn(blocker)
+        worst = getattr(result, "worst_constraint", None)
+        blocker = blocker_of(worst, movable)
+        again = blocker is not None and not source.learn(blocker)
+        # A push (within one face's cone) that runs into a wall, or out of every cone, or
+        # into a body it was already known to need moved first (moving it did not help:
+        # it was moved into the way, gen1 planar-s02's box2 in goal2): skeletons without
+        # that push come first (an ordering: the NLPs are local).
+        pushed = fixed_obstacle_of(worst, movable)
+        if pushed is None and blocker is not None and (again or _PUSH_RULE in worst):
+            pushed = blocker.action
+        if pushed is None and _OUTSIDE in (worst or ""):
+            # The object keeps its yaw: its footprint against the region is the same
+            # wherever the push stands in a skeleton (x-s18: 40 final-stage failures).
+            pushed = action_of(worst)
+        if pushed is not None and getattr(kinds.get(pushed), "within_cone", False):
+            source.suspect(pushed)
+            wall = fixed_body_of(worst, movable)
+            if wall is not None and infos is not None and wall in infos:
+                beyond = _beyond(task, modes, scene, infos, pushed, infos[wall])
+                if beyond:
+                    source.learn(*beyond)
         impossible = getattr(result, "impossible", None)
         if impossible is not None:
             source.forbid_operators(frozenset(
                 op.name for op in task.operators if matches(op, *impossible)))
 
     return learn
+
+
+def _beyond(task, modes, scene, infos, pushed: str, wall) -> list[Blocker]:
+    """Blocker(object, push) for every push of `pushed`'s object (the same kind) into a
+    region whose straight line from the object's start meets `wall`, swept by the
+    pusher beside the object: from its start, that push likely runs into the wall
+    too; skeletons that move the object elsewhere first come next (an ordering)."""
+    ops = {op.name: op for op in task.operators}
+    mode = modes.get_mode(ops[pushed].action)
+    obj = mode.bind(ops[pushed].args)["object"]
+    info, regions = infos.get(obj), {r.name: r for r in scene.regions}
+    if info is None or scene.robot.model != "planar":
+        return []
+    clearance = scene.robot.radius + info.radius
+    found = []
+    for op in task.operators:
+        other = modes.get_mode(op.action)
+        if other.kind != mode.kind or not other.geometric:
+            continue
+        roles = other.bind(op.args)
+        to = regions.get(roles["to"])
+        if roles["object"] == obj and to is not None \
+                and line_meets(info.pose[:2], to, wall, clearance):
+            found.append(Blocker(obj, op.name))
+    return found

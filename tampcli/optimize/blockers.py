@@ -46,3 +46,28 @@ def blocker_of(worst: str | None, movable: frozenset[str]) -> Blocker | None:
         if body in movable and body not in args:
             return Blocker(body, name)
     return None
+
+
+def fixed_obstacle_of(worst: str | None, movable: frozenset[str]) -> str | None:
+    """The action a worst-row message names when a collision with a body that never
+    moves (a wall, a post: not in `movable`) is what failed, else None. For a push
+    (whose motion keeps to one face's friction cone) that reads as "this push runs
+    into the scene's fixed geometry wherever it stands in a skeleton": a guess, which
+    bnb/lessons.py turns into an ordering (LearningSource.suspect), never a proof."""
+    action = _ACTION.search(worst or "")
+    if action is None or fixed_body_of(worst, movable) is None:
+        return None
+    return action.group(1)
+
+
+def fixed_body_of(worst: str | None, movable: frozenset[str]) -> str | None:
+    """The body that never moves a collision row of `worst` names, else None."""
+    found = _COLLISION.search(worst or "")
+    return found.group("b") if found is not None and found.group("b") not in movable \
+        else None
+
+
+def action_of(worst: str | None) -> str | None:
+    """The first ground action a worst-row message names, else None."""
+    found = _ACTION.search(worst or "")
+    return found.group(1) if found is not None else None

@@ -47,6 +47,7 @@ from tampcli.optimize.convex_qp import ConvexQP, solve_convex_qp
 from tampcli.optimize.kinds.push_check import PENETRATION, SLACK, STILL
 from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, face_of
 from tampcli.optimize.problem import TrajectoryProblem
+from tampcli.optimize.push_reach import cone_slack, open_faces
 from tampcli.optimize.relaxed_apart import Apart, apart, blocks_alone, solve_apart
 from tampcli.optimize.verify import INSIDE, LIMIT, RIGID
 from tampcli.optimize.verify import STILL as STILL_OBJECT
@@ -73,8 +74,16 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
         return None
     if problem.error is not None:
         return RelaxedBound(math.inf, "proved", why=problem.error)
+    hull = Builder(problem, {})  # no face chosen: no friction cone
     choices = [(s.index, s.kind.relax_faces(problem, s)) for s in problem.steps]
     choices = [(i, faces) for i, faces in choices if faces]
+    pushes = [problem.steps[i].name for i, _ in choices]
+    # Only the faces whose cone can lead from where the object is into the target
+    # (push_reach.py): the others' QPs are infeasible, proved without solving them.
+    choices = [(i, hull.open_faces(problem.steps[i], faces)) for i, faces in choices]
+    closed = next((i for i, faces in choices if not faces), None)
+    if closed is not None:
+        return RelaxedBound(math.inf, "proved", 0, _cone_why(problem, closed))
     assignments = [{}]
     if math.prod(len(faces) for _, faces in choices) <= MAX_FACE_ASSIGNMENTS:
         assignments = [dict(zip([i for i, _ in choices], pick, strict=True))
@@ -82,29 +91,41 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
     budget = max(5, MAX_QPS // len(assignments))
     best, proved, qps = math.inf, True, 0
     for faces in assignments:
-        builder = Builder(problem, faces)
+        builder = hull if not faces else Builder(problem, faces)
         out, solved, _ = solve_apart(builder.qp(), builder.aparts, budget)
         best, proved, qps = min(best, out.value), proved and out.proved, qps + solved
     kind = "proved" if proved else "heuristic"
-    pushes = [problem.steps[i].name for i, _ in choices]
-    why = _why_infeasible(problem, budget, pushes) if math.isinf(best) else None
+    why = _why_infeasible(problem, hull, budget, pushes) if math.isinf(best) else None
     return RelaxedBound(float(max(best, 0.0)), kind, qps, why)
 
 
-def _why_infeasible(problem, budget: int, pushes: list[str]) -> str | None:
+CONE = "no pushed face's friction cone leads into the target (a drag or a pull)"
+
+
+def _cone_why(problem, index: int) -> str:
+    """Words for a push none of whose faces' cones leads into its target: worded as
+    the NLPs word it when it is the prefix's last step (the skeleton source learns
+    that its object must be moved before it: from where it stands, no face leads
+    there)."""
+    name = problem.steps[index].name
+    if name == problem.steps[-1].name:
+        return f"{name}: motion not into the pushed face ({CONE})"
+    return f"{CONE}: {name}"
+
+
+def _why_infeasible(problem, hull, budget: int, pushes: list[str]) -> str | None:
     """The part of the relaxation that makes it infeasible, when one alone does.
-    `pushes`: the names of the pushing steps (with faces to choose)."""
-    hull = Builder(problem, {})  # no face chosen: no friction cone
+    `hull`: the Builder with no face chosen (no friction cone); `pushes`: the names
+    of the pushing steps (with faces to choose)."""
     if math.isinf(solve_convex_qp(hull.qp()).value):
         return None
     if pushes and not math.isinf(solve_apart(hull.qp(), hull.aparts, budget)[0].value):
-        cone = "no pushed face's friction cone leads into the target (a drag or a pull)"
         if pushes[-1] == problem.steps[-1].name:
             # The last step of a shortest infeasible prefix is the push that fails: worded
             # as the NLPs word it, the skeleton source learns that its object must be
             # moved before it (from where it stands, no face leads there).
-            return f"{pushes[-1]}: motion not into the pushed face ({cone})"
-        return cone
+            return f"{pushes[-1]}: motion not into the pushed face ({CONE})"
+        return CONE
     alone = next((p for p in hull.aparts if blocks_alone(p, hull.box)), None)
     if alone is not None:
         # Worded as the NLPs word an overlap: the skeleton source learns the blocker.
@@ -156,6 +177,7 @@ class Builder:
             n: np.array(i.pose[:2]) for n, i in problem.bodies.items() if not i.fixed}
         self.offsets: dict[int, tuple[int, int]] = {}  # grasp step -> (offset var, keyframe)
         self.aparts: list[Apart] = []
+        self.push_boxes: dict[int, tuple] = {}  # push step -> (centre box before, after)
         self.regions = {r.name: r for r in problem.scene.regions}
         for step in problem.steps:
             step.kind.relax(self, step)
@@ -278,9 +300,13 @@ class Builder:
         angle = self.faces.get(step.index)
         w = self._face_offset(info, rim, angle)  # the object's centre minus the disk's
         q0, q1 = self.keyframes[k0], self.keyframes[k1]
-        if step.obj in self.pos:
+        at = self.pos.get(step.obj)
+        if at is not None:
             self._centre(step.obj, q0, w)
-        self._placement(step, q1, w, 1)  # the same offset all along the push
+        c = self._placement(step, q1, w, 1)  # the same offset all along the push
+        if at is not None:  # where the centre starts and ends: boxes (push_reach.py)
+            src = (at, at) if isinstance(at, np.ndarray) else self.box(at)
+            self.push_boxes[step.index] = (src, self.box(c))
         if angle is not None:
             self._cone(info, angle, q0, q1)
 
@@ -307,6 +333,19 @@ class Builder:
         self.ineq += [({w: n}, face.depth + out), ({w: -n}, -face.depth - near),
                       ({w: e}, face.width + out), ({w: -e}, face.width + out)]
         return w
+
+    def open_faces(self, step, faces) -> tuple[float, ...]:
+        """The faces among `faces` of a push whose cone can lead from where this
+        skeleton leaves its object into the target: the others' QPs are infeasible
+        (push_reach.cone_gap, with this relaxation's drift: the centre's creep at
+        both ends and a push phase's RIGID). All of them where the object's place
+        before the push is not followed (a kind without relaxation moved it)."""
+        boxes = self.push_boxes.get(step.index)
+        if boxes is None:
+            return tuple(faces)
+        drift = RIGID + 2 * STILL_OBJECT * len(self.problem.steps)
+        return open_faces(self.problem.bodies[step.obj], *boxes, drift,
+                          cone_slack(self.problem.options.waypoints), faces)
 
     def _cone(self, info, angle: float, q0: int, q1: int) -> None:
         """|d.e| <= mu' d.n + slack for d = q1 - q0 (the object moves with the disk)."""

@@ -37,51 +37,17 @@ import heapq
 import math
 from collections import deque
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 
+from tampcli.search.learned_task import MOVED, PROVED, Blocker, compile_task, is_subsequence
 from tampcli.task.task import Operator, Task
 
-MOVED = "(tampcli-moved {})"  # the fact a learned precondition asks for
+__all__ = ["MOVED", "PROVED", "Blocker", "LearningSource", "compile_task"]
+
 # Deferred skeletons in a row before the cheapest deferred one is drawn anyway: past
 # the few skeletons that clear an obstruction, a ranked enumeration yields mostly
 # padded copies of them (tens of thousands a minute on a pen with three blockers,
 # measured), and branch and bound should not wait for the enumeration to get past them.
 MAX_DEFERRED_IN_A_ROW = 100
-
-
-@dataclass(frozen=True)
-class Blocker:
-    """`body`, where it stood, blocked the ground action `action` (its name)."""
-
-    body: str
-    action: str
-
-
-def compile_task(task: Task, blockers: frozenset[Blocker],
-                 moves: Callable[[Operator], frozenset[str]]) -> Task:
-    """The task with a `(moved b)` fact per blocking body: added by every
-    operator that moves b, a precondition of each operator b blocked."""
-    bodies = sorted({b.body for b in blockers})
-    fact = {body: len(task.facts) + i for i, body in enumerate(bodies)}
-    needs: dict[str, set[int]] = {}
-    for b in blockers:
-        needs.setdefault(b.action, set()).add(fact[b.body])
-    operators = []
-    for op in task.operators:
-        adds = {fact[body] for body in moves(op) if body in fact}
-        pre = needs.get(op.name)
-        if adds or pre:
-            op = dataclasses.replace(
-                op, add=op.add | adds,
-                pre=dataclasses.replace(op.pre, pos=op.pre.pos | frozenset(pre or ())))
-        operators.append(op)
-    return dataclasses.replace(task, facts=task.facts + tuple(MOVED.format(b) for b in bodies),
-                               operators=tuple(operators))
-
-
-def _is_subsequence(short: tuple[str, ...], long: tuple[str, ...]) -> bool:
-    rest = iter(long)
-    return all(any(name == other for other in rest) for name in short)
 
 
 class LearningSource:
@@ -106,6 +72,8 @@ class LearningSource:
                  moves: Callable[[Operator], frozenset[str]], loopless: bool = True,
                  make_regrasps: Callable[[Task], object] | None = None):
         self.task, self._make, self._moves = task, make_topk, moves
+        self._base = task  # as given: require_moved compiles its proofs into a copy
+        self.proved: frozenset[Blocker] = frozenset()  # preconditions require_moved took in
         self.loopless = loopless
         self.revisits = 0  # times more than once a drawn plan may pass a state
         self.impossible: frozenset[str] = frozenset()  # operators forbid_operators took out
@@ -113,6 +81,7 @@ class LearningSource:
         self._cheapest = None  # the cost of the task's cheapest plan, once pulled
         self._by_name = {op.name: op for op in task.operators}
         self.blockers: frozenset[Blocker] = frozenset()
+        self.suspects: frozenset[str] = frozenset()  # operators `suspect` put last
         self._compiled, self._compiled_ops = task, self._by_name
         self._plain = make_topk(task)
         self._plain_queue: deque = deque()  # plain plans pulled for the bound, not yet drawn
@@ -125,23 +94,40 @@ class LearningSource:
         self._fits: dict[tuple[str, ...], bool] = {}  # evaluated plan -> valid in _compiled
         self._solved: list[tuple[str, ...]] = []
         self._forbidden: list[tuple[str, ...]] = []
-        self.stats = {"learned": 0, "superseded": 0, "redundant": 0, "from_learned": 0}
+        self.stats = dict(learned=0, superseded=0, redundant=0, from_learned=0, proved=0,
+                          suspects=0)
 
     # ------------------------------------------------------------ what bnb tells it
 
-    def learn(self, blocker: Blocker) -> bool:
-        """Take a finding in; True when it is new (the enumeration restarts)."""
-        if blocker in self.blockers:
+    def learn(self, blocker: Blocker, *more: Blocker) -> bool:
+        """Take findings in; True when one is new (the enumeration restarts, once)."""
+        new = frozenset((blocker, *more)) - self.blockers
+        if not new:
             return False
-        self.blockers = self.blockers | {blocker}
-        self.stats["learned"] += 1
+        self.blockers = self.blockers | new
+        self.stats["learned"] += len(new)
+        self._recompile()
+        self._restart(plain=False)
+        return True
+
+    def suspect(self, name: str) -> bool:
+        """An operator that failed in a way that may not depend on where it stands in
+        a skeleton (a push into a wall): the skeletons without it come first. An
+        ordering, like `learn`: the plain enumeration still yields the others. True
+        when it is new (the learned enumeration restarts)."""
+        if name in self.suspects or name not in self._by_name:
+            return False
+        self.suspects = self.suspects | {name}
+        self.stats["suspects"] = len(self.suspects)
         self._recompile()
         self._restart(plain=False)
         return True
 
     def _recompile(self) -> None:
         """The task with what was learned, anew (the task or the findings changed)."""
-        self._compiled = compile_task(self.task, self.blockers, self._moves)
+        compiled = compile_task(self.task, self.blockers, self._moves)
+        self._compiled = dataclasses.replace(compiled, operators=tuple(
+            op for op in compiled.operators if op.name not in self.suspects))
         self._compiled_ops = {op.name: op for op in self._compiled.operators}
         self._fits.clear()
 
@@ -150,7 +136,7 @@ class LearningSource:
         forbidden prefixes still forbidden."""
         if plain:
             self._plain, self._plain_done = self._make(self.task), False
-        self._learned = self._make(self._compiled) if self.blockers else None
+        self._learned = self._make(self._compiled) if self.blockers or self.suspects else None
         for names in self._forbidden:
             if plain:
                 self._plain.forbid_prefix(names)
@@ -180,6 +166,37 @@ class LearningSource:
         self._plain_queue = deque(p for p in self._plain_queue if not uses(p))
         self._deferred = [d for d in self._deferred if not uses(d[2])]
         heapq.heapify(self._deferred)
+
+    def require_moved(self, blockers: frozenset[Blocker]) -> None:
+        """Preconditions proved for every skeleton (a push that cannot move its object
+        from its start pose: the object must have been moved before it), compiled into
+        the task itself: no skeleton that breaks one is enumerated any more, and the
+        bound stays proved (only infeasible skeletons are left out). Unlike `learn`,
+        which orders, this filters."""
+        new = frozenset(blockers) - self.proved
+        if not new:
+            return
+        self.proved |= new
+        self.stats["proved"] = len(self.proved)
+        base = dataclasses.replace(self._base, operators=tuple(
+            op for op in self._base.operators if op.name not in self.impossible))
+        self.task = compile_task(base, self.proved, self._moves, PROVED)
+        self._recompile()
+        self._restart(plain=True)
+        self._plain_queue = deque(p for p in self._plain_queue if self._valid(p.names))
+        self._deferred = [d for d in self._deferred if self._valid(d[2].names)]
+        heapq.heapify(self._deferred)
+
+    def _valid(self, names: tuple[str, ...]) -> bool:
+        """The plan reaches the goal in the (proved-compiled) task."""
+        ops = {op.name: op for op in self.task.operators}
+        state = self.task.init
+        for name in names:
+            op = ops.get(name)
+            if op is None or not op.pre.holds(self.task.closure(state)):
+                return False
+            state = self.task.apply(state, op)
+        return self.task.is_goal(state)
 
     def forbid_prefix(self, names: tuple[str, ...]) -> None:
         self._forbidden.append(tuple(names))
@@ -276,10 +293,10 @@ class LearningSource:
         nothing symbolically);
         "redundant": an evaluated skeleton that already meets everything learned,
         plus actions; both come last, after every other skeleton."""
-        if any(_is_subsequence(s, names) for s in self._solved):
+        if any(is_subsequence(s, names) for s in self._solved):
             return "superseded"
         for other in self._evaluated:
-            if len(other) < len(names) and _is_subsequence(other, names) \
+            if len(other) < len(names) and is_subsequence(other, names) \
                     and self._meets_learned(other) and self._moves_nothing_new(other, names):
                 return "redundant"
         return None
@@ -324,11 +341,12 @@ class LearningSource:
         return None
 
     def _loops(self, plan) -> bool:
-        """Passes a state more often than the enumeration allows (1 + `revisits`)."""
-        state = self.task.init
+        """Passes a state of the task as given (no learned or proved facts) more often
+        than the enumeration allows (1 + `revisits`)."""
+        state = self._base.init
         seen = {state: 1}
         for op in plan.operators:
-            state = self.task.apply(state, op)
+            state = self._base.apply(state, op)
             seen[state] = seen.get(state, 0) + 1
             if seen[state] > 1 + self.revisits:
                 return True
@@ -342,8 +360,13 @@ class LearningSource:
     def _next_plain(self):
         while self._plain_queue or self._pull_plain():
             plan = self._plain_queue.popleft()
-            if plan.names not in self._considered:
-                return plan
+            if plan.names in self._considered:
+                continue
+            # A proved precondition's fact tells states apart that the task does not:
+            # its enumeration's plans are held to the task's states, as learned ones are.
+            if self.proved and self.loopless and self._loops(self._plain_version(plan)):
+                continue
+            return plan
         return None
 
     def _pull_plain(self) -> bool:

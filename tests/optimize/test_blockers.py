@@ -40,3 +40,16 @@ def test_a_push_that_cannot_go_from_where_its_object_stands_blames_the_object():
     # Two movable arguments: which one is pushed is not known from the name alone.
     assert blocker_of("(push a b goal): motion not into the pushed face by 1 cm",
                       MOVABLE) is None
+
+
+def test_a_collision_with_a_body_that_never_moves_names_the_action():
+    from tampcli.optimize.blockers import fixed_obstacle_of
+
+    worst = ("motion 5 before (push b home3 goal3 bench): collision planar_body vs wall2 "
+             "(margin 1 mm) by 6.0 cm")
+    assert fixed_obstacle_of(worst, MOVABLE) == "(push b home3 goal3 bench)"
+    # A movable body in the way is a blocker, not the scene's geometry.
+    assert fixed_obstacle_of("motion 2 before (push a x y bench): collision planar_body vs b "
+                             "(margin 1 mm) by 4.3 cm", MOVABLE) is None
+    assert fixed_obstacle_of("(place a goal): overlaps wall by 1.0 cm", MOVABLE) is None
+    assert fixed_obstacle_of(None, MOVABLE) is None

@@ -185,3 +185,76 @@ def test_operators_proved_impossible_are_gone_from_every_later_skeleton():
     everything = {p.names for p in TopK(task, loopless=True)}
     assert {p.names for p in rest} | {first.names} == \
         {n for n in everything if not set(n) & gone} | {first.names}
+
+
+def _moves_before(names, body: str, action: str) -> bool:
+    """`body` is picked before the first `action` (or `action` never comes)."""
+    for name in names:
+        if name == action:
+            return False
+        if name.startswith(f"(pick {body} "):
+            return True
+    return True
+
+
+def test_a_proved_precondition_filters_every_skeleton_that_breaks_it():
+    task, _ = pen(2)
+    proof = Blocker("b1", "(place a goal)")
+    everything = [p for p in TopK(task, loopless=True)]
+    keep = {p.names for p in everything if _moves_before(p.names, "b1", "(place a goal)")}
+    assert keep and len(keep) < len(everything)
+    src = source(task)
+    src.require_moved(frozenset({proof}))
+    assert src.stats["proved"] == 1
+    drawn = []
+    for i, plan in enumerate(src):
+        drawn.append(plan.names)
+        if i == 0:  # a learned lesson on top: it orders the rest, the proof still filters
+            src.learn(Blocker("b2", "(place a goal)"))
+    assert set(drawn) == keep and len(drawn) == len(keep)
+
+
+def test_a_proved_precondition_keeps_the_bound_on_what_is_left():
+    task, _ = pen(2)
+    src = source(task)
+    first = next(src)  # drawn before the proof: the queue is filtered by it
+    src.require_moved(frozenset({Blocker("b1", "(place a goal)")}))
+    src.require_moved(frozenset({Blocker("b1", "(place a goal)")}))  # again: no change
+    assert src.stats["proved"] == 1
+    rest = [p for p in TopK(task, loopless=True) if p.names != first.names
+            and _moves_before(p.names, "b1", "(place a goal)")]
+    assert src.lower_bound() == min(p.cost for p in rest)
+    later = list(src)
+    assert {p.names for p in later} == {p.names for p in rest}
+
+
+def test_operators_forbidden_after_a_proof_stay_forbidden_with_it():
+    task, _ = pen(2)
+    src = source(task)
+    gone = frozenset(op.name for op in task.operators if op.name.startswith("(pick b2 "))
+    src.forbid_operators(gone)
+    src.require_moved(frozenset({Blocker("b1", "(place a goal)")}))
+    rest = list(src)
+    assert rest
+    assert not any(set(p.names) & gone for p in rest)
+    assert all(_moves_before(p.names, "b1", "(place a goal)") for p in rest)
+
+
+def test_a_suspect_operator_comes_last_but_is_not_lost():
+    task, _ = pen(2)
+    plain = [p.names for p in TopK(task, loopless=True)]
+    suspect = "(pick b1 goal)"
+    assert any(suspect in names for names in plain[:3])
+    src = source(task)
+    assert src.suspect(suspect) and not src.suspect(suspect)  # new once
+    assert not src.suspect("(no such operator)")
+    drawn = [p.names for p in src]
+    assert sorted(drawn) == sorted(plain)  # an ordering: every skeleton still comes
+    # Moving b1 out of the goal first comes before moving b2 in the plain order; with
+    # (pick b1 goal) suspected, b2's comes first.
+    b1_first = ("(pick b1 goal)", "(place b1 floor)", "(pick a floor)", "(place a goal)")
+    b2_first = ("(pick b2 goal)", "(place b2 floor)", "(pick a floor)", "(place a goal)")
+    assert plain.index(b1_first) < plain.index(b2_first)
+    assert drawn.index(b2_first) < drawn.index(b1_first)
+    assert not any(suspect in names for names in drawn[:2])
+    assert src.stats["suspects"] == 1

@@ -23,6 +23,9 @@ class ModeKind(ABC):
     holds: bool = True  # replay: what is attached during its motions hangs in closed fingers
     fingers: bool | None = None  # replay: the fingers are closed after it (None: unchanged)
     planar_grip: bool = False  # `grip` also says how the planar robot holds (a push's face)
+    # The planar robot moves the object only within the friction cone of one of its
+    # faces, without turning it (a push): what optimize/push_reach.py proves things of.
+    within_cone: bool = False
 
     def __repr__(self) -> str:
         return self.name

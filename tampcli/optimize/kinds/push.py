@@ -129,6 +129,7 @@ class Push(ModeKind):
     places = True
     holds = False
     planar_grip = True
+    within_cone = True
 
     def lower(self, lo, index, op, mode):
         obj, _, to = lo.roles(op, mode)

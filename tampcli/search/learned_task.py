@@ -1,0 +1,53 @@
+"""The task a skeleton source enumerates, with what geometry found compiled in.
+
+A `Blocker` (a body in the way of a ground action) becomes a fact `(moved b)`
+added by every operator that moves b and required by the action it blocked
+(`compile_task`): learned ones order skeletons (search/learned.py's
+LearningSource), proved ones filter them (its `require_moved`).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable
+from dataclasses import dataclass
+
+from tampcli.task.task import Operator, Task
+
+MOVED = "(tampcli-moved {})"  # the fact a learned precondition asks for
+PROVED = "(tampcli-moved-first {})"  # the fact a proved precondition asks for (require_moved)
+
+
+@dataclass(frozen=True)
+class Blocker:
+    """`body`, where it stood, blocked the ground action `action` (its name)."""
+
+    body: str
+    action: str
+
+
+def compile_task(task: Task, blockers: frozenset[Blocker],
+                 moves: Callable[[Operator], frozenset[str]], fact_name: str = MOVED) -> Task:
+    """The task with a `(moved b)` fact per blocking body (`fact_name`): added by
+    every operator that moves b, a precondition of each operator b blocked."""
+    bodies = sorted({b.body for b in blockers})
+    fact = {body: len(task.facts) + i for i, body in enumerate(bodies)}
+    needs: dict[str, set[int]] = {}
+    for b in blockers:
+        needs.setdefault(b.action, set()).add(fact[b.body])
+    operators = []
+    for op in task.operators:
+        adds = {fact[body] for body in moves(op) if body in fact}
+        pre = needs.get(op.name)
+        if adds or pre:
+            op = dataclasses.replace(
+                op, add=op.add | adds,
+                pre=dataclasses.replace(op.pre, pos=op.pre.pos | frozenset(pre or ())))
+        operators.append(op)
+    return dataclasses.replace(task, facts=task.facts + tuple(fact_name.format(b) for b in bodies),
+                               operators=tuple(operators))
+
+
+def is_subsequence(short: tuple[str, ...], long: tuple[str, ...]) -> bool:
+    rest = iter(long)
+    return all(any(name == other for other in rest) for name in short)

@@ -1,0 +1,149 @@
+"""What geometry teaches the skeleton source before and during the search
+(bnb/lessons.py): proofs on gen1's planar instances, and a teacher's orderings."""
+
+from pathlib import Path
+from types import SimpleNamespace
+
+import pytest
+
+from tampcli.bnb.lessons import first_move_proofs, teacher
+from tampcli.geometry.world import World
+from tampcli.optimize.bodies import body_info
+from tampcli.optimize.options import OptimizeOptions
+from tampcli.pipeline import InputPaths, Timers, read_inputs
+from tampcli.search.learned import Blocker, LearningSource
+from tampcli.search.topk import TopK
+
+GEN1 = Path(__file__).resolve().parents[2] / "problems" / "gen1"
+
+
+def _inputs(name):
+    folder = GEN1 / name
+    return read_inputs(InputPaths(str(folder / "domain.pddl"), str(folder / "problem.pddl")),
+                       Timers())
+
+
+@pytest.fixture(scope="module")
+def s04():
+    inputs = _inputs("planar-s04")
+    with World(inputs.scene) as world:
+        infos = {n: body_info(inputs.scene.body(n), world) for n in world.movable_names}
+        yield inputs, infos
+
+
+def test_a_push_off_every_cone_from_the_start_is_proved_to_need_a_move_first(s04):
+    """planar-s04 (README: box2's goal lies outside every face's friction cone)."""
+    inputs, infos = s04
+    proofs = first_move_proofs(inputs.task, inputs.modes, inputs.scene, infos,
+                               OptimizeOptions())
+    assert Blocker("box2", "(push box2 home2 goal2 bench)") in proofs
+    # The crate's goal lies straight along a face normal: its push stays open.
+    assert not any(b.action == "(push crate1 home1 goal1 bench)" for b in proofs)
+    # Only pushes, each on the object it pushes, and only its own start matters: the
+    # same push from every symbolic `from` region is in or out together.
+    assert all(b.action.startswith(f"(push {b.body} ") for b in proofs)
+    for b in proofs:
+        to = b.action.split()[3]
+        same = {op.name for op in inputs.task.operators if op.action == "push"
+                and op.args[0] == b.body and op.args[2] == to}
+        assert same <= {p.action for p in proofs}
+
+
+def test_no_proof_for_an_arm_or_a_disk():
+    inputs = _inputs("arm-clutter-s01")
+    with World(inputs.scene) as world:
+        infos = {n: body_info(inputs.scene.body(n), world) for n in world.movable_names}
+        assert first_move_proofs(inputs.task, inputs.modes, inputs.scene, infos,
+                                 OptimizeOptions()) == frozenset()
+
+
+def test_the_proofs_leave_the_pick_and_place_plans(s04):
+    inputs, infos = s04
+    source = LearningSource(inputs.task, lambda t: TopK(t, loopless=True),
+                            lambda op: frozenset(op.args[:1]) & frozenset(infos))
+    source.require_moved(first_move_proofs(inputs.task, inputs.modes, inputs.scene, infos,
+                                           OptimizeOptions()))
+    first = next(source)
+    assert "(push box2 home2 goal2 bench)" not in first.names
+    assert first.cost > 8  # the four pushes (cost 8) are gone
+
+
+def test_the_teacher_suspects_a_push_into_a_wall_and_a_drag_but_not_a_pick(s04):
+    inputs, infos = s04
+    heard = []
+    source = SimpleNamespace(learn=lambda b: heard.append(("learn", b)) or True,
+                             suspect=lambda n: heard.append(("suspect", n)),
+                             forbid_operators=lambda names: heard.append(("forbid", names)))
+    learn = teacher(source, inputs.task, inputs.modes, frozenset(infos))
+    wall = ("motion 5 before (push box3 home3 goal3 bench): collision planar_body vs wall2 "
+            "(margin 1 mm) by 6.0 cm")
+    learn(SimpleNamespace(worst_constraint=wall))
+    assert heard == [("suspect", "(push box3 home3 goal3 bench)")]
+    heard.clear()
+    drag = "(push box3 home3 goal1 bench): motion not into the pushed face (a drag) by 7 cm"
+    learn(SimpleNamespace(worst_constraint=drag))
+    assert heard == [("learn", Blocker("box3", "(push box3 home3 goal1 bench)")),
+                     ("suspect", "(push box3 home3 goal1 bench)")]
+    heard.clear()
+    pick = ("motion 3 before (pick box3 home3): collision planar_body vs wall2 "
+            "(margin 1 mm) by 1.0 cm")
+    learn(SimpleNamespace(worst_constraint=pick))
+    assert heard == []
+    # A pushed footprint left out of its region (the object cannot turn): suspected; a
+    # place so failing is not (the rule is the pushes').
+    learn(SimpleNamespace(worst_constraint="(push box4 home4 home3 bench): footprint outside "
+                                           "region home3 by 0.1 cm"))
+    assert heard == [("suspect", "(push box4 home4 home3 bench)")]
+    heard.clear()
+    learn(SimpleNamespace(worst_constraint="(place box4 home3): footprint outside region "
+                                           "home3 by 0.1 cm"))
+    assert heard == []
+
+
+def test_a_push_into_a_wall_orders_the_pushes_beyond_it_from_the_same_start(s04):
+    """planar-s04: box3 starts east of two walls; pushed towards goal3 (west of them)
+    it ran into wall2. Its pushes into regions whose line from its start crosses
+    wall2 are learned to need a move first (an ordering); those on its side are not."""
+    inputs, _ = s04
+    with World(inputs.scene) as world:
+        infos = {b.name: body_info(b, world) for b in inputs.scene.bodies}
+    learned, suspected = [], []
+    source = SimpleNamespace(learn=lambda *b: learned.extend(b) or True,
+                             suspect=suspected.append,
+                             forbid_operators=lambda names: None)
+    movable = frozenset(n for n, i in infos.items() if not i.fixed)
+    learn = teacher(source, inputs.task, inputs.modes, movable, inputs.scene, infos)
+    learn(SimpleNamespace(worst_constraint=(
+        "motion 5 before (push box3 home3 goal3 bench): collision planar_body vs wall2 "
+        "(margin 1 mm) by 6.0 cm")))
+    assert suspected == ["(push box3 home3 goal3 bench)"]
+    targets = {b.action.split()[3] for b in learned}
+    assert all(b.body == "box3" and b.action.startswith("(push box3 ") for b in learned)
+    assert {"goal3", "goal4", "home2"} <= targets  # all west of the walls
+    assert "home3" not in targets  # where it stands
+    regions = {r.name: r for r in inputs.scene.regions}
+    wall = infos["wall2"].pose[0]
+    assert all(regions[t].center[0] < wall for t in targets)
+
+
+def test_a_push_blocked_again_by_a_body_already_learned_is_suspected(s04):
+    """The first overlap teaches "move box2 first"; the same overlap again (box2 was
+    moved, into the way) suspects the push; a pick so blocked is not suspected."""
+    inputs, infos = s04
+    suspected = []
+    source = LearningSource(inputs.task, lambda t: TopK(t, loopless=True),
+                            lambda op: frozenset(op.args[:1]) & frozenset(infos))
+    source.suspect = suspected.append
+    learn = teacher(source, inputs.task, inputs.modes, frozenset(infos))
+    overlap = SimpleNamespace(worst_constraint="(push box3 home3 goal2 bench): overlaps box2 "
+                                               "by 0.5 cm")
+    learn(overlap)
+    assert suspected == [] and Blocker("box2", "(push box3 home3 goal2 bench)") \
+        in source.blockers
+    learn(overlap)
+    assert suspected == ["(push box3 home3 goal2 bench)"]
+    pick = SimpleNamespace(worst_constraint="motion 2 before (pick box3 home3): collision "
+                                            "planar_body vs box2 (margin 1 mm) by 1 cm")
+    learn(pick)
+    learn(pick)
+    assert suspected == ["(push box3 home3 goal2 bench)"]
