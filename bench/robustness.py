@@ -87,6 +87,14 @@ BLIND9 = {"p01": ("reach edge, shelf", 2), "p02": ("place on an object", 2),
           "p05": ("typed domain, blocker", 8), "p06": ("symbolic station", 10),
           "p07": ("push and drag, free a spot", 5), "p08": ("derived predicate, sphere", 8)}
 
+# problems/blind10 (written against 1491a26): reach near the base, a deep box, a
+# four-size tower, a corridor push order, typed sorting, unstacking, a two-level shelf,
+# push plus pick with a symbolic condition.
+BLIND10 = {"p01": ("reach near and behind", 2), "p02": ("deep open box", 2),
+           "p03": ("tower of four", 8), "p04": ("corridor push order", 3),
+           "p05": ("typed sorting, six objects", 12), "p06": ("unstack to reach", 6),
+           "p07": ("two-level shelf", 4), "p08": ("push heavy, pick, symbolic", 5)}
+
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
 # off where pushes or a blocking neighbour change the count; None: not known).
@@ -110,6 +118,7 @@ def problems() -> list[tuple[str, str, str, int]]:
     rows += [("blind7", stem, cls, n) for stem, (cls, n) in sorted(BLIND7.items())]
     rows += [("blind8", stem, cls, n) for stem, (cls, n) in sorted(BLIND8.items())]
     rows += [("blind9", stem, cls, n) for stem, (cls, n) in sorted(BLIND9.items())]
+    rows += [("blind10", stem, cls, n) for stem, (cls, n) in sorted(BLIND10.items())]
     rows += [("gen1", stem, cls, n) for stem, (cls, n) in sorted(GEN1.items())]
     return rows
 
