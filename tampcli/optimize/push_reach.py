@@ -42,7 +42,8 @@ MU = (PUSH_FRICTION + SLACK) / (1.0 - SLACK)
 HORIZON = 1000
 
 
-def _rot(yaw: float) -> np.ndarray:
+def rot(yaw: float) -> np.ndarray:
+    """The 2x2 rotation by yaw."""
     c, s = math.cos(yaw), math.sin(yaw)
     return np.array([[c, -s], [s, c]])
 
@@ -51,7 +52,7 @@ def footprint_extent(info) -> np.ndarray:
     """Half extents along the world axes of an upright body's footprint at its yaw."""
     if info.disk:
         return np.array([info.half[0]] * 2)
-    return np.abs(_rot(info.pose[3])) @ np.array(info.half[:2])
+    return np.abs(rot(info.pose[3])) @ np.array(info.half[:2])
 
 
 def centre_box(info, region) -> tuple[np.ndarray, np.ndarray]:
@@ -81,7 +82,7 @@ def cone_gap(info, angle: float, src: tuple, dst: tuple, drift: float,
         return math.inf
     lo = dlo - np.asarray(src[1], dtype=float) - drift
     hi = dhi - np.asarray(src[0], dtype=float) + drift
-    R = _rot(info.pose[3])
+    R = rot(info.pose[3])
     n = R @ np.array([math.cos(angle), math.sin(angle)])
     e = R @ np.array([-math.sin(angle), math.cos(angle)])
     points = [np.array([x, y]) for x in (lo[0], hi[0]) for y in (lo[1], hi[1])]
@@ -132,7 +133,7 @@ def line_meets(start, region, obstacle, clearance: float, samples: int = 64) -> 
     if obstacle.disk:
         gap = np.linalg.norm(rel, axis=1) - obstacle.half[0]
     else:
-        local = rel @ _rot(obstacle.pose[3])  # into the obstacle's frame
+        local = rel @ rot(obstacle.pose[3])  # into the obstacle's frame
         out = np.maximum(np.abs(local) - np.array(obstacle.half[:2]), 0.0)
         gap = np.linalg.norm(out, axis=1)
     return bool((gap < clearance).any())

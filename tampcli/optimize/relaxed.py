@@ -47,7 +47,7 @@ from tampcli.optimize.convex_qp import ConvexQP, solve_convex_qp
 from tampcli.optimize.kinds.push_check import PENETRATION, SLACK, STILL
 from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, face_of
 from tampcli.optimize.problem import TrajectoryProblem
-from tampcli.optimize.push_reach import cone_slack, open_faces
+from tampcli.optimize.push_reach import cone_slack, footprint_extent, open_faces, rot
 from tampcli.optimize.relaxed_apart import Apart, apart, blocks_alone, solve_apart
 from tampcli.optimize.verify import INSIDE, LIMIT, RIGID
 from tampcli.optimize.verify import STILL as STILL_OBJECT
@@ -135,19 +135,6 @@ def _why_infeasible(problem, hull, budget: int, pushes: list[str]) -> str | None
     return None
 
 
-def _rot(yaw: float) -> np.ndarray:
-    c, s = math.cos(yaw), math.sin(yaw)
-    return np.array([[c, -s], [s, c]])
-
-
-def _footprint_extent(info) -> np.ndarray:
-    """Half extents along the world axes of an upright body's footprint."""
-    if info.disk:
-        return np.array([info.half[0]] * 2)
-    R = np.abs(_rot(info.pose[3]))
-    return R @ np.array(info.half[:2])
-
-
 def _polygon(support) -> list[tuple[np.ndarray, float]]:
     """Half-planes d'v <= h(d) around a convex set given by its support function."""
     out = []
@@ -228,11 +215,11 @@ class Builder:
                 return rim + info.half[0]
             reach = rim + info.half[0]
         else:
-            half, R = np.array(info.half[:2]), _rot(info.pose[3])
+            half, R = np.array(info.half[:2]), rot(info.pose[3])
 
             def support(d):
                 return float(np.abs(R.T @ d) @ half) + rim
-            reach = float(_footprint_extent(info).max()) + rim
+            reach = float(footprint_extent(info).max()) + rim
         v = self._offset(support, reach)
         (k,) = step.keyframes
         if step.obj in self.pos:
@@ -248,7 +235,7 @@ class Builder:
         qlo, qhi = self.box(q)
         olo, ohi = self.box(offset)
         lo, hi = qlo + olo - drift, qhi + ohi + drift
-        ext, regions = _footprint_extent(info), self.regions
+        ext, regions = footprint_extent(info), self.regions
         if step.target in regions:
             r = regions[step.target]
             lo = np.maximum(lo, np.asarray(r.lower) + ext - INSIDE)
@@ -273,7 +260,7 @@ class Builder:
         at = self.pos.get(support) if not sinfo.fixed else np.array(sinfo.pose[:2])
         if at is None:
             return
-        R = _rot(sinfo.pose[3])
+        R = rot(sinfo.pose[3])
         half = np.array(sinfo.half[:2]) + INSIDE
         for axis in (0, 1):
             for sign in (1.0, -1.0):
@@ -316,18 +303,18 @@ class Builder:
         normal than along the other axis, the rim touching (TOUCH_TOLERANCE away at
         most, PENETRATION in at most, a corner's diagonal included). With no face (a
         disk, or too many pushes), around the whole footprint."""
-        R = _rot(info.pose[3])
+        R = rot(info.pose[3])
         out = rim + TOUCH_TOLERANCE
         if angle is None:
             half = np.array(info.half[:2]) if not info.disk else None
 
             def support(d):
                 return out + (info.half[0] if half is None else float(np.abs(R.T @ d) @ half))
-            return self._offset(support, float(_footprint_extent(info).max()) + out)
+            return self._offset(support, float(footprint_extent(info).max()) + out)
         face = face_of(info, angle)
         n = R @ np.array([math.cos(angle), math.sin(angle)])
         e = R @ np.array([-math.sin(angle), math.cos(angle)])
-        reach = float(_footprint_extent(info).max()) + 2 * out  # holds at any yaw
+        reach = float(footprint_extent(info).max()) + 2 * out  # holds at any yaw
         w = self.var([-reach] * 2, [reach] * 2)
         near = (rim - PENETRATION) / math.sqrt(2)  # at a corner, on its diagonal
         self.ineq += [({w: n}, face.depth + out), ({w: -n}, -face.depth - near),
@@ -349,7 +336,7 @@ class Builder:
 
     def _cone(self, info, angle: float, q0: int, q1: int) -> None:
         """|d.e| <= mu' d.n + slack for d = q1 - q0 (the object moves with the disk)."""
-        R = _rot(info.pose[3])
+        R = rot(info.pose[3])
         n = R @ np.array([math.cos(angle), math.sin(angle)])
         e = R @ np.array([-math.sin(angle), math.cos(angle)])
         # validate's test per segment, |d.e| <= mu d.n + SLACK |d|, implies this
