@@ -107,6 +107,29 @@ def test_declared_but_unused_unsupported_requirements_warn_at_their_keys():
         "nothing uses it, so it is ignored"]
 
 
+def test_a_goals_quantifiers_are_uses_and_supported_unused_requirements_pass_silently():
+    """docs/formats.md, "The PDDL tampcli reads": a goal's forall/exists needs its
+    requirement (warned at the goal); a supported requirement declared and unused,
+    and `(not (= ...))` (a use of :equality alone), give no warning."""
+    body = ("(:types item bin) (:predicates (in ?i - item ?b - bin) (p ?a ?b - item))\n"
+            " (:action a :parameters (?x ?y - item) :precondition (not (= ?x ?y))"
+            " :effect (p ?x ?y))")
+    problem_text = ("(define (problem q) (:domain d) (:objects i - item b - bin)\n"
+                    " (:init) (:goal (forall (?i - item) (exists (?b - bin) (in ?i ?b)))))")
+    problem = parser.parse_problem(problem_text, "q.pddl")
+    bare = _domain(body, ":strips :typing :equality :negative-preconditions")
+    warnings = check.check(bare, problem)
+    assert warnings == [
+        "q.pddl:2:37: uses `exists` without declaring :existential-preconditions",
+        "q.pddl:2:17: uses `forall` conditions without declaring :universal-preconditions"]
+    report = check.requirements(bare, problem)
+    assert ":negative-preconditions" not in report.used and ":equality" in report.used
+    assert ":universal-preconditions" not in check.requirements(bare).used
+    declared = _domain(body, ":strips :typing :equality :negative-preconditions "
+                             ":universal-preconditions :existential-preconditions")
+    assert check.check(declared, problem) == []
+
+
 def test_increasing_another_function_is_a_use_of_numeric_fluents_and_refused(tmp_path):
     path = tmp_path / "d.pddl"
     path.write_text("(define (domain d) (:requirements :numeric-fluents)\n"
