@@ -74,7 +74,7 @@ def test_the_teacher_suspects_a_push_into_a_wall_and_a_drag_but_not_a_pick(s04):
     source = SimpleNamespace(learn=lambda b: heard.append(("learn", b)) or True,
                              suspect=lambda n: heard.append(("suspect", n)),
                              forbid_operators=lambda names: heard.append(("forbid", names)))
-    learn = teacher(source, inputs.task, inputs.modes, frozenset(infos))
+    learn = teacher(source, inputs.task, inputs.modes, frozenset(infos), inputs.scene)
     wall = ("motion 5 before (push box3 home3 goal3 bench): collision planar_body vs wall2 "
             "(margin 1 mm) by 6.0 cm")
     learn(SimpleNamespace(worst_constraint=wall))
@@ -134,7 +134,7 @@ def test_a_push_blocked_again_by_a_body_already_learned_is_suspected(s04):
     source = LearningSource(inputs.task, lambda t: TopK(t, loopless=True),
                             lambda op: frozenset(op.args[:1]) & frozenset(infos))
     source.suspect = suspected.append
-    learn = teacher(source, inputs.task, inputs.modes, frozenset(infos))
+    learn = teacher(source, inputs.task, inputs.modes, frozenset(infos), inputs.scene)
     overlap = SimpleNamespace(worst_constraint="(push box3 home3 goal2 bench): overlaps box2 "
                                                "by 0.5 cm")
     learn(overlap)
@@ -147,3 +147,21 @@ def test_a_push_blocked_again_by_a_body_already_learned_is_suspected(s04):
     learn(pick)
     learn(pick)
     assert suspected == ["(push box3 home3 goal2 bench)"]
+
+
+def test_an_arms_push_is_not_suspected_for_a_link_against_a_fixed_body(s04):
+    """The wall and blocker-again suspicions are the planar robot's: an arm's link
+    against a fixed rim at a push says where the arm came from (blind8 p05 lost its
+    6-action answer to that ordering); the push-rule row is still read."""
+    inputs, infos = s04
+    heard = []
+    source = SimpleNamespace(learn=lambda b: heard.append(("learn", b)) or False,
+                             suspect=lambda n: heard.append(("suspect", n)),
+                             forbid_operators=lambda names: heard.append(("forbid", names)))
+    arm = SimpleNamespace(robot=SimpleNamespace(model="panda"), regions=())
+    learn = teacher(source, inputs.task, inputs.modes, frozenset(infos), arm)
+    learn(SimpleNamespace(worst_constraint="(push box3 home3 goal3 bench): collision "
+                                           "panda_link7 vs wall2 (margin 1 mm) by 0.4 cm"))
+    learn(SimpleNamespace(worst_constraint="(push box3 home3 goal2 bench): overlaps box2 "
+                                           "by 0.5 cm"))
+    assert not [h for h in heard if h[0] == "suspect"]
