@@ -135,7 +135,7 @@ def _levenberg_marquardt_batch(world, target, qs, rows, iterations, tolerance):
     returns), or when every seed has stopped."""
     lower, upper = world.lower, world.upper
     chain, tool = world.chain, world._tool_index
-    eye = np.eye(len(range(6)[rows]))
+    eye = np.eye(rows.stop - rows.start)
 
     def evaluate(q):
         frames = chain.fk_batch(q)

@@ -108,9 +108,13 @@ def rounded(d, p1, p2, normal, margin_a: float, margin_b: float):
 
 PRISMS = ("box", "cylinder")  # kinds prism.py answers when upright
 # Kinds on which FCL 0.7's GJK mostly stops early (arm-sort: 96 % of a Panda link's
-# pairs with a cylinder failed the check): the batched narrow phase (pairs.py) asks
-# coal first for them.
+# pairs with a cylinder failed the check): the second engine is asked first for them.
 CURVED = ("cylinder", "capsule")
+
+
+def second_first(a: Shape, b: Shape, second) -> bool:
+    """Whether the pair of shapes `a`, `b` is asked of `second` (coal) instead of FCL."""
+    return second is not None and (a.kind in CURVED or b.kind in CURVED)
 
 
 def _core_distance(request, a: Placed, oa, b: Placed, ob, second=None):
@@ -118,9 +122,16 @@ def _core_distance(request, a: Placed, oa, b: Placed, ob, second=None):
         exact = prism.distance(a, b)
         if exact is not None:
             return exact
-    if second is not None and (a.shape.kind in CURVED or b.shape.kind in CURVED):
+    asked = not (second_first(a.shape, b.shape, second) or no_fcl(a, b))
+    return certified_pair(fcl_distance(request, a, oa, b, ob) if asked else None, a, b,
+                          second)
+
+
+def certified_pair(raw, a: Placed, b: Placed, second=None):
+    """`certified` of FCL's answer, or of `second`'s for a pair FCL was not asked
+    because `second_first` sends it there."""
+    if raw is None and second_first(a.shape, b.shape, second):
         return certified(second(a, b), a, b)
-    raw = None if no_fcl(a, b) else fcl_distance(request, a, oa, b, ob)
     return certified(raw, a, b, second)
 
 

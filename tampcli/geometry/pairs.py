@@ -19,7 +19,14 @@ import numpy as np
 from tampcli.geometry import certify, prism, transforms
 from tampcli.geometry.broad import PartTable
 from tampcli.geometry.certify import Solids
-from tampcli.geometry.narrow import CURVED, TOLERANCE, Placed, certified, no_fcl, rounded
+from tampcli.geometry.narrow import (
+    TOLERANCE,
+    Placed,
+    certified_pair,
+    no_fcl,
+    rounded,
+    second_first,
+)
 from tampcli.geometry.parts import Part
 
 SCALAR_PAIRS = 8  # groups of at most this many pairs skip the array set-up (measured)
@@ -289,7 +296,7 @@ class Batch:
                 answer = prism.distance(Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t]))
             if answer is None:
                 raw = None
-                if not (self.checker.coal is not None and (ta.curved[ja] or tb.curved[jb])) and not (
+                if not second_first(pa.shape, pb_.shape, self.checker.coal) and not (
                         ta.box[ja] and tb.box[jb]
                         and no_fcl(Placed(pa.shape, wa[t]), Placed(pb_.shape, wb[t]))):
                     d = fcl_distance(request, pa.obj, pb_.obj, rot[t], pos[t], result)
@@ -309,15 +316,10 @@ class Batch:
             self.out[s].append(Contact(pa.owner, pb_.owner, float(d), p1, p2, n, grad))
 
     def _certified(self, raw, pa: Part, wa, pb_: Part, wb):
-        """narrow.certified of FCL's answer (in the world) for one pair, asking coal
-        (coal_query.py) if it fails the check; of coal's for a curved pair, which FCL
-        was not asked (narrow.CURVED)."""
-        a, b = Placed(pa.shape, wa), Placed(pb_.shape, wb)
-        coal = self.checker.coal
-        if coal is not None and raw is None and (pa.shape.kind in CURVED
-                                                 or pb_.shape.kind in CURVED):
-            return certified(coal(a, b), a, b)
-        return certified(raw, a, b, coal)
+        """narrow.certified_pair of FCL's answer (in the world) for one pair: coal
+        (coal_query.py) asked when it fails the check, or first (narrow.second_first)."""
+        return certified_pair(raw, Placed(pa.shape, wa), Placed(pb_.shape, wb),
+                              self.checker.coal)
 
 
 def _relative(ra, xa, rb, xb):

@@ -54,10 +54,7 @@ def fixed_obstacle_of(worst: str | None, movable: frozenset[str]) -> str | None:
     (whose motion keeps to one face's friction cone) that reads as "this push runs
     into the scene's fixed geometry wherever it stands in a skeleton": a guess, which
     bnb/lessons.py turns into an ordering (LearningSource.suspect), never a proof."""
-    action = _ACTION.search(worst or "")
-    if action is None or fixed_body_of(worst, movable) is None:
-        return None
-    return action.group(1)
+    return action_of(worst) if fixed_body_of(worst, movable) is not None else None
 
 
 def fixed_body_of(worst: str | None, movable: frozenset[str]) -> str | None:
