@@ -94,6 +94,10 @@ BLIND10 = {"p01": ("reach near and behind", 2), "p02": ("deep open box", 2),
            "p03": ("tower of four", 8), "p04": ("corridor push order", 3),
            "p05": ("typed sorting, six objects", 12), "p06": ("unstack to reach", 6),
            "p07": ("two-level shelf", 4), "p08": ("push heavy, pick, symbolic", 5)}
+BLIND11 = {"p01": ("thin slab by a wall", 2), "p02": ("into a packed row", 2),
+           "p03": ("can among cylinders", 2), "p04": ("blocker cleared first", 6),
+           "p05": ("stack of three", 6), "p06": ("push then pick", 3),
+           "p07": ("typed forall/exists", 6), "p08": ("cyclic swap", 8)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -119,6 +123,7 @@ def problems() -> list[tuple[str, str, str, int]]:
     rows += [("blind8", stem, cls, n) for stem, (cls, n) in sorted(BLIND8.items())]
     rows += [("blind9", stem, cls, n) for stem, (cls, n) in sorted(BLIND9.items())]
     rows += [("blind10", stem, cls, n) for stem, (cls, n) in sorted(BLIND10.items())]
+    rows += [("blind11", stem, cls, n) for stem, (cls, n) in sorted(BLIND11.items())]
     rows += [("gen1", stem, cls, n) for stem, (cls, n) in sorted(GEN1.items())]
     return rows
 

@@ -350,11 +350,18 @@ def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result:
     if result.status != "solved":
         return Solution(status=result.status, reason=result.reason, **common)
     best = result.best
+    trajectory = [[float(v) for v in q] for q in best.trajectory]
+    if best.fingers is not None:
+        # The hand held narrower than open (optimize/hand.py): its finger joints as
+        # columns after the arm's, as the format allows (solution_read.FINGER_JOINTS).
+        common["robot"] = {**robot, "joints": [*robot["joints"], *world.finger_names]}
+        trajectory = [q + [float(v) for v in f] for q, f in zip(trajectory, best.fingers,
+                                                                 strict=True)]
     return Solution(
         status="solved", reason=None, plan=tuple(op.name for op in result.best_plan),
         symbolic_cost=result.best_symbolic_cost, cost=float(best.cost),
         objective=result.best_objective,
-        trajectory=tuple(tuple(float(v) for v in q) for q in best.trajectory),
+        trajectory=tuple(tuple(q) for q in trajectory),
         phases=tuple(p if isinstance(p, Phase) else Phase(*p) for p in best.phases),
         objects={k: [list(map(float, pose)) for pose in v] for k, v in best.object_poses.items()},
         kkt=best.kkt, **common)

@@ -1,5 +1,5 @@
 """Reshape a solution.json (as a dict) into other shapes the format allows:
-motions split at a waypoint, a retreat appended, finger columns added."""
+motions split at a waypoint, a retreat appended, finger columns removed or added."""
 
 from __future__ import annotations
 
@@ -26,6 +26,17 @@ def split_motion(data: dict, k: int, at: int, world) -> dict:
             pose = [float(v) for v in
                     transforms.xyzquat_from_pose(world.tool_pose(q[at]) @ grasp)]
         poses.insert(k + 1, list(pose))
+    return data
+
+
+def arm_only(data: dict) -> dict:
+    """The file without finger columns (what `solve` writes where the hand stays
+    fully open): the shape the other reshapings start from."""
+    data = copy.deepcopy(data)
+    joints = data["robot"]["joints"]
+    keep = [j for j, name in enumerate(joints) if not name.startswith("panda_finger")]
+    data["robot"]["joints"] = [joints[j] for j in keep]
+    data["trajectory"] = [[q[j] for j in keep] for q in data["trajectory"]]
     return data
 
 

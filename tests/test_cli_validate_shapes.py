@@ -11,7 +11,7 @@ import pytest
 from tampcli.geometry.scene import load_scene
 from tampcli.geometry.world import World
 from tests.conftest import ROOT
-from tests.solution_shapes import add_fingers, add_retreat, split_motion
+from tests.solution_shapes import add_fingers, add_retreat, arm_only, split_motion
 
 ARM = ROOT / "domains" / "arm-pick-place" / "domain.pddl"
 ARM1 = ROOT / "problems" / "arm-pick-place" / "p01.pddl"
@@ -32,13 +32,21 @@ def solve(domain, problem, out) -> dict:
 
 
 @pytest.fixture(scope="module")
-def arm(tmp_path_factory):
-    """pick a, place a: motion 0-10, pick, carry 10-20, place (as solve writes it)."""
+def written(tmp_path_factory) -> dict:
+    """pick a, place a, as solve writes it: the hand opened for the 5 cm cube
+    (optimize/hand.py), the Panda's two finger columns after the arm's."""
     data = solve(ARM, ARM1, tmp_path_factory.mktemp("arm") / "p01.json")
     assert [(p["action"], p["start"], p["end"]) for p in data["phases"]] == [
         (None, 0, 10), ("(pick a start)", 10, 10), (None, 10, 20), ("(place a goal)", 20, 20)]
-    with World(load_scene(data["scene"], geometric=False)) as world:
-        yield data, world
+    return data
+
+
+@pytest.fixture(scope="module")
+def arm(written):
+    """motion 0-10, pick, carry 10-20, place, without finger columns (the fingers
+    then open, closed on a from the pick to the place)."""
+    with World(load_scene(written["scene"], geometric=False)) as world:
+        yield arm_only(written), world
 
 
 @pytest.fixture
@@ -143,6 +151,17 @@ def opening(i: int) -> float:
     # motion down to the cube too (the fingers close after it: closed there, they
     # would touch the cube before it is held).
     return 0.025 if 10 < i < 20 else 0.04
+
+
+def test_as_solved_with_its_finger_columns(written, validate):
+    joints = written["robot"]["joints"]
+    assert joints[-2:] == ["panda_finger_joint1", "panda_finger_joint2"]
+    fingers = np.array([q[-2:] for q in written["trajectory"]])
+    # Opened for the 5 cm cube and 6 mm a side, not fully (4 cm); closed on it
+    # (2.5 cm and the pads' 1.1 mm) from the pick's waypoint to the place's.
+    assert np.allclose(fingers[:10], fingers[0]) and 0.031 < fingers[0, 0] < 0.033
+    assert np.allclose(fingers[10:21], fingers[10]) and 0.025 < fingers[10, 0] < 0.027
+    valid(validate(written))
 
 
 def test_finger_columns(arm, validate):

@@ -153,10 +153,13 @@ def _render(solved, out_path, video, options, ui) -> None:
     """Render from what the solve holds: its inputs and its open World."""
     from tampcli.render.inputs import RenderInputs
     from tampcli.render.video import render_solution
+    from tampcli.solution_read import check_solution
 
     inputs = solved.inputs
-    source = RenderInputs(solved.solution, out_path or "<solution>", inputs.scene,
-                          inputs.problem.name, inputs.modes)
+    # The arm's columns for the replay, the finger columns (if any) beside them.
+    checked = check_solution(solved.solution, out_path or "<solution>")
+    source = RenderInputs(checked.canonical, checked.path, inputs.scene,
+                          inputs.problem.name, inputs.modes, checked)
     info = render_solution(source, video, options, ui=ui, world=solved.world)
     ui.info(f"video: {info.get('path', video)}")
 

@@ -136,8 +136,12 @@ class Chain:
         for i, parent, *_ in self._plan:
             if i in values:
                 link = self.links[i]
-                local = np.array([link.origin @ _motion(link.joint_type, link.axis, float(v))
-                                  for v in values[i]])
+                v = np.asarray(values[i], dtype=float)
+                if np.all(v == v[0]):  # one value for every row (a hand held at one opening)
+                    local = link.origin @ _motion(link.joint_type, link.axis, float(v[0]))
+                else:
+                    local = np.array([link.origin @ _motion(link.joint_type, link.axis, float(x))
+                                      for x in v])
             elif parent in moved:
                 local = np.linalg.solve(frames[:, parent], frames[:, i])
             else:

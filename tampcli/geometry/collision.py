@@ -29,6 +29,7 @@ taken for all pairs together; narrow.py, prism.py). Distances are signed (negati
 
 from __future__ import annotations
 
+import copy
 import math
 
 import fcl
@@ -68,6 +69,9 @@ class CollisionChecker:
             name: [Part(f"body:{name}", s, fcl_object(s), body=name) for s in shapes]
             for name, shapes in self.body_shapes.items()}
         self._held_parts: dict[str, PartTable] = {}
+        # The finger joints' values (World.finger_links' order) every query takes
+        # unless told otherwise; None: as loaded, open (`with_fingers`).
+        self.fingers: tuple[float, ...] | None = None
         self._start = {b.name: b.matrix for b in world.scene.bodies}
         self.fixed = {b.name for b in world.scene.bodies if b.fixed}
         self.group = rigid_groups(chain)
@@ -122,6 +126,29 @@ class CollisionChecker:
                 Part(f"held:{name}", s, fcl_object(s), body=name) for s in self.body_shapes[name])
         return self._held_parts[name]
 
+    def with_fingers(self, values) -> CollisionChecker:
+        """This checker with the fingers held at `values` (one per World.finger_links)
+        in every query: a hand opened only as wide as a skeleton's objects need
+        (optimize/hand.py). It shares this one's shapes and caches; None: open."""
+        if values is None and self.fingers is None:
+            return self
+        out = copy.copy(self)
+        out.fingers = None if values is None else tuple(float(v) for v in values)
+        return out
+
+    def _frames(self, qs: np.ndarray, fingers=None) -> np.ndarray:
+        """fk_batch frames of the rows of qs, the fingers at `fingers` ((S, k) per row)
+        or else at this checker's own values."""
+        chain = self.world.chain
+        frames = chain.fk_batch(qs)
+        if fingers is None and self.fingers is not None:
+            fingers = np.broadcast_to(np.asarray(self.fingers), (len(qs), len(self.fingers)))
+        if fingers is not None:
+            values = np.asarray(fingers, dtype=float).reshape(len(qs), -1)
+            frames = chain.refixed(frames, dict(zip(self.world.finger_links, values.T,
+                                                    strict=True)))
+        return frames
+
     # ------------------------------------------------------------ queries
 
     def distances(self, q, body_poses: dict | None = None, held=None,
@@ -146,19 +173,14 @@ class CollisionChecker:
         own state of the world). `ignores`: one set of names per row (or None:
         nothing ignored). `fingers`: (S, k) values of the finger joints
         (World.finger_links' order) per row, where a solution file gives them;
-        None: open, as the optimizer keeps them.
+        None: this checker's (`with_fingers`; open unless set).
         """
         qs = np.asarray(qs, dtype=float).reshape(-1, self.n)
         n_samples = len(qs)
         ignores = [frozenset()] * n_samples if ignores is None else list(ignores)
         per_row = isinstance(body_poses, list | tuple)
         helds = list(held) if isinstance(held, list) else [held] * n_samples
-        chain = self.world.chain
-        frames = chain.fk_batch(qs)
-        if fingers is not None:
-            values = np.asarray(fingers, dtype=float).reshape(n_samples, -1)
-            frames = chain.refixed(frames, dict(zip(self.world.finger_links, values.T,
-                                                    strict=True)))
+        frames = self._frames(qs, fingers)
         if per_row:
             bodies = self._body_boxes_rows([self._body_poses(bp) for bp in body_poses],
                                            [frozenset(bp or ()) for bp in body_poses])
@@ -326,8 +348,10 @@ class CollisionChecker:
 
     def _query(self, q, body_poses) -> Query:
         chain = self.world.chain
-        return Query(chain, chain.fk_list(np.asarray(q, dtype=float)),
-                      self._shared_placed(body_poses))
+        q = np.asarray(q, dtype=float)
+        frames = chain.fk_list(q) if self.fingers is None else list(
+            self._frames(q.reshape(1, -1))[0])
+        return Query(chain, frames, self._shared_placed(body_poses))
 
     def _held_pose(self, frames, held):
         if held is None:

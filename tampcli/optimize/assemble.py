@@ -89,6 +89,7 @@ class PhaseWalk:
         self.poses = {n: [transforms.xyzquat_from_pose(t)] for n, t in self.resting.items()}
         self.grasps = {}
         self.idx = 0
+        self.events: list[tuple[int, object]] = []  # (waypoint where a step ends, step)
 
     def tool(self) -> np.ndarray:
         return self.world.tool_pose(self.traj[self.idx])
@@ -113,7 +114,8 @@ class PhaseWalk:
 
 
 def assemble(problem: TrajectoryProblem, start, waypoints: dict, contexts: list[MotionContext]):
-    """(trajectory (N, n), phases, object poses per phase boundary, grasps used).
+    """(trajectory (N, n), phases, object poses per phase boundary, grasps used,
+    (waypoint where each step ends, step) in order).
     `waypoints[k]`: motion k's interior waypoints (T_k - 1, n), its T_k segments its own."""
     traj = [np.asarray(start, dtype=float)]
     ctx_of = {c.index: c for c in contexts}
@@ -133,4 +135,5 @@ def assemble(problem: TrajectoryProblem, start, waypoints: dict, contexts: list[
             w.idx += T
             w.boundary()
         step.kind.phases(w, step)
-    return w.traj, tuple(w.phases), w.poses, w.grasps
+        w.events.append((w.idx, step))
+    return w.traj, tuple(w.phases), w.poses, w.grasps, w.events

@@ -11,6 +11,7 @@ import time
 from tampcli.optimize import relocate
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
+from tampcli.optimize.hand import finger_columns, with_hand
 from tampcli.optimize.keyframe_stage import (
     face_grips,
     keyframes,
@@ -89,7 +90,18 @@ def _relocated(run: Run, warm, grips, kfr, found: TrajectoryResult) -> Trajector
 
 
 def path_through(run: Run, kfr) -> TrajectoryResult:
-    """The path stage through the keyframes of `kfr` (solved)."""
+    """The path stage through the keyframes of `kfr` (solved), the hand opened as its
+    grips need (hand.with_hand)."""
+    base = run.problem
+    run.problem = with_hand(base, kfr.choices)
+    run.checker = run.problem.checker
+    try:
+        return _path_through(run, kfr)
+    finally:
+        run.problem, run.checker = base, base.checker
+
+
+def _path_through(run: Run, kfr) -> TrajectoryResult:
     problem = run.problem
     kf, choices = kfr.keyframes, kfr.choices
     contexts = walk(problem, kf, choices, run.start)
@@ -136,22 +148,26 @@ def path_through(run: Run, kfr) -> TrajectoryResult:
                         placements=kfr.placements,
                         worst_constraint=f"path bound {bound:.4g} after "
                         f"{_phase_label(problem, ctx.index)}")
-        traj, phases, poses, grasps = assemble(problem, run.start, waypoints, contexts)
+        traj, phases, poses, grasps, events = assemble(problem, run.start, waypoints,
+                                                       contexts)
         # Each motion's cost as its NLP weighed it (path.phase_rows_fn: T_k / T times its
         # segments' sum, the vertical ends of approach.py included), not the plain sum
         # over the trajectory: a motion on more segments would look cheaper.
         phase_costs = tuple(costs[k] for k in range(problem.n_keyframes))
         result = run.result("solved", cost=float(sum(phase_costs)), phase_costs=phase_costs,
                             kkt=dataclasses.replace(kfr.kkt, path=combined(kkts.values())),
-                            trajectory=traj,
+                            trajectory=traj, fingers=finger_columns(problem, events, choices,
+                                                                    len(traj)),
                             phases=phases, object_poses=poses, keyframes=kf, choices=choices,
                             placements=kfr.placements, grasps=grasps)
-        problems = verify_mod.verify(problem, result)
+        # Judged with the fingers as the solution gives them (closed on what is held).
+        problems = verify_mod.verify(problem, result, fingers=result.fingers)
         if not problems:
             return result
         # A collision between the sample points: sample the failing phases finer.
         failing.clear()
-        failing.update({i for i, _ in verify_mod.failing_motions(problem, result)}
+        failing.update({i for i, _ in verify_mod.failing_motions(problem, result,
+                                                                 fingers=result.fingers)}
                        or range(problem.n_keyframes))
         checks = 2 * checks + 1
         if time.perf_counter() > run.deadline:

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from tampcli.optimize.bodies import body_info, start_support
+from tampcli.optimize.hand import open_hand
 from tampcli.optimize.kinds import KINDS, SYMBOLIC
 from tampcli.optimize.options import OptimizeOptions
 from tampcli.optimize.skeleton import (
@@ -40,6 +41,10 @@ class TrajectoryProblem:
     impossible: tuple | None = None
     grip_params: tuple[int, ...] = ()  # steps with one continuous grip parameter, in order
     checker: object = field(default=None, repr=False)  # geometry.collision.CollisionChecker
+    # optimize.hand.Hand: the fingers' opening throughout (`checker` holds them there);
+    # open as lowered, narrowed to the grips chosen (hand.with_hand)
+    hand: object = field(default=None, repr=False)
+    hands: dict = field(default_factory=dict, repr=False)  # hand.hand_of's, by width
 
     @property
     def n(self) -> int:
@@ -85,9 +90,9 @@ def lower(skeleton, scene, modes, world, options: OptimizeOptions | None = None,
         impossible = (err.action, err.obj, err.role) if isinstance(err, ImpossibleAction) \
             else None
         return TrajectoryProblem(steps=(), motions=(), error=str(err), impossible=impossible,
-                                 error_proved=err.proved, **base)
+                                 error_proved=err.proved, hand=open_hand(world), **base)
     return TrajectoryProblem(steps=tuple(lo.steps), motions=tuple(lo.motions),
-                             grip_params=tuple(lo.grip_params), **base)
+                             grip_params=tuple(lo.grip_params), hand=open_hand(world), **base)
 
 
 def mode_of(modes, action: str):

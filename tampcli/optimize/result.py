@@ -53,6 +53,9 @@ class TrajectoryResult:
     # that failed leads to (what the failure depends on besides the keyframes).
     failed_actions: int | None = None
     trajectory: np.ndarray | None = field(default=None, repr=False)
+    # (waypoints, k) the finger joints (World.finger_names) at each waypoint where the
+    # hand is not open as loaded (optimize/hand.py); None: open unless closed on an object
+    fingers: np.ndarray | None = field(default=None, repr=False)
     phases: tuple = ()  # tampcli.solution.Phase
     object_poses: dict = field(default_factory=dict, repr=False)  # name -> [7-vector]
     # Warm starts for a later stage or a longer skeleton:

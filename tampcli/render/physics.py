@@ -54,7 +54,8 @@ def replay_physics(inputs, mode_kind=None, speed: float | None = None,
     settings = settings or PhysicsSettings()
     with World(inputs.scene) as world:
         replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind, speed=speed,
-                        pause=settings.pause)
+                        pause=settings.pause,
+                        fingers=inputs.file.fingers if inputs.file is not None else None)
         run = _Run(world, replay, inputs, settings, mode_kind or (lambda action: None))
         run.play()
         return run.report()
@@ -70,7 +71,9 @@ class _Run:
         self.force = settings.planar_force if model == "planar" else settings.arm_force
         self.sim = world.start_dynamics(settings.hz)
         first = replay.state_at(0.0)
-        world.set_state(np.asarray(first.q), first.poses, fingers_closed=False)
+        world.set_state(np.asarray(first.q), first.poses, fingers_closed=False,
+                        fingers=first.fingers)
+        self.gripping = False  # the fingers closed on what is held (not the file's values)
         self.sim.set_contacts(settings.friction, settings.restitution,
                               settings.spinning_friction, settings.rolling_friction)
         self.masses = {name: object_mass(inputs.scene.body(name), settings.density)
@@ -88,7 +91,11 @@ class _Run:
         self.overlaps: list[list] = []
         self.contact: dict[str, float] = {}  # depth at the last release, during the retreat
 
-    def _step(self, q, track: bool = True) -> None:
+    def _step(self, q, track: bool = True, fingers=None) -> None:
+        """One step towards q; `fingers`: the solution's finger values there (the
+        fingers follow them unless closed on what is held)."""
+        if fingers is not None and not self.gripping:
+            self.sim.open_fingers(fingers)
         self.sim.drive(q, self.force, self.settings.finger_force, self.settings.gain)
         self.sim.step()
         self.steps += 1
@@ -110,19 +117,26 @@ class _Run:
                 return
             self._step(q, track=False)
 
-    def _switch(self, held: str | None, q, grip: bool) -> None:
-        """Let go of what is held, then take `held` (fingers closing on it when `grip`)."""
+    def _switch(self, held: str | None, index: int, grip: bool) -> None:
+        """Let go of what is held, then take `held` (fingers closing on it when `grip`),
+        at waypoint `index`."""
+        q = self.replay.q[index]
         self._arrive(q)
         released = self.sim.held
         if released is not None:
             # the retreat's first move may still pass into it (play's exemptions)
             self.sim.release(heed=False)
             self.contact[released] = self.sim.overlap(released)
-            self.sim.open_fingers()
+            # Opened as far as the solution opens them after the release (fully when
+            # it does not say): a hand opened wide among packed neighbours hits them.
+            after = self.replay.fingers_at(min(index + 1, len(self.replay.q) - 1))
+            self.sim.open_fingers(after)
+            self.gripping = False
             self._wait(q, self.settings.settle_after_place)
         if held is not None:
             self._taking(held)
             if grip and self.sim.close_fingers_on(held):
+                self.gripping = True
                 self._wait(q, self.settings.grip_seconds)
                 self.grips.append(Grip(held, float(np.sum(self.sim.finger_positions()))))
             self.sim.grasp(held, self.settings.grasp_force)
@@ -188,11 +202,10 @@ class _Run:
                         # grasp switches on the carry's first segment, and half a step
                         # along it the tool is 0.7-1.3 mm and 0.4 deg from where the plan
                         # grasps (blind8 p06, p07), a grip error every place inherits.
-                        self._switch(holding[j][0], self.replay.q[item.index],
-                                     holding[j][1])
+                        self._switch(holding[j][0], item.index, holding[j][1])
                     if j in exempt:
                         self.sim.ignore_robot(exempt[j])
-                self._step(state.q)
+                self._step(state.q, fingers=state.fingers)
                 if j in exempt and s % 4 == 0:
                     self._note_overlap(exempt[j], item.phase)
             if j in exempt and exempt.get(j + 1) != exempt[j] and exempt[j] != self.sim.held:
@@ -204,7 +217,7 @@ class _Run:
         final = self.replay.state_at(self.replay.duration)
         if self.sim.held is not None:
             released = self.sim.held
-            self._switch(None, final.q, False)
+            self._switch(None, len(self.replay.q) - 1, False)
             self.sim.heed_robot(released)
         self._wait(final.q, self.settings.settle_final)
 

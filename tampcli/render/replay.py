@@ -104,6 +104,13 @@ class Replay:
         self._ends = [float(v) for v in np.cumsum([item.duration for item in self.items])]
         self.duration = float(self._ends[-1]) if self._ends else 0.0
 
+    def fingers_at(self, index: int) -> tuple[float, ...] | None:
+        """The finger joints' values the solution gives at waypoint `index` (None:
+        it gives none)."""
+        if self._finger_values is None:
+            return None
+        return tuple(float(v) for v in self._finger_values[index])
+
     # -- building ---------------------------------------------------------------
 
     def _grasp_transforms(self, tool_pose) -> dict[int, np.ndarray]:

@@ -116,8 +116,15 @@ class Dynamics:
         """`name` collides with the robot again as soon as it is clear of it."""
         self._released.add(name)
 
-    def open_fingers(self) -> None:
-        self._finger_target = list(self._finger_open)
+    def open_fingers(self, values=None) -> None:
+        """Drive the fingers open, or to `values` (one per finger joint: a hand
+        opened only so far, as a solution's finger columns give it)."""
+        if values is None:
+            self._finger_target = list(self._finger_open)
+            return
+        if len(values) != len(self._fingers):
+            raise ValueError(f"{len(values)} finger values for {len(self._fingers)} joints")
+        self._finger_target = [float(v) for v in values]
 
     def grasp(self, name: str, max_force: float) -> None:
         """Attach `name` to the tool where both are now; it ignores the robot meanwhile."""

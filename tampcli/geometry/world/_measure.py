@@ -165,10 +165,12 @@ def aabb(pb, client: int, body: int, links=None) -> tuple[np.ndarray, np.ndarray
 
 
 def gripper_size(pb, client: int, body: int, fingers, chain, tool: int, q,
-                 reach: float = 0.02) -> tuple[float, float] | None:
+                 reach: float = 0.02, values: dict | None = None
+                 ) -> tuple[float, float] | None:
     """(opening, fingertip depth) of open fingers at configuration q, in the tool frame
     (chain link `tool`), from the exact support of their collision shapes (margins
-    included: the solids PyBullet sees).
+    included: the solids PyBullet sees). `values`: chain link index -> its finger
+    joint's value, for fingers not open.
 
     Opening: the gap along y between the finger parts on either side that
     come within `reach` of the tool origin's height (linkage bars higher up
@@ -176,7 +178,11 @@ def gripper_size(pb, client: int, body: int, fingers, chain, tool: int, q,
     """
     if fingers is None:
         return None
-    frames = chain.fk_list(q)
+    if values:
+        frames = chain.refixed(chain.fk_batch(np.asarray(q, dtype=float).reshape(1, -1)),
+                               {i: np.array([v]) for i, v in values.items()})[0]
+    else:
+        frames = chain.fk_list(q)
     to_tool = transforms.pose_inverse(frames[tool])
     by_pb = {link.pb_index: i for i, link in enumerate(chain.links)}
     depth, left, right = -np.inf, np.inf, np.inf

@@ -202,6 +202,20 @@ class World:
         origin: the widest object they close on. None without fingers."""
         return self._gripper[0] if self._gripper else None
 
+    def gripper_at(self, t: float) -> tuple[tuple[float, ...], float, float] | None:
+        """(finger joint values in `finger_links`' order, opening, fingertip depth) with
+        the fingers a fraction t of the way from open (0) to closed (1), measured as
+        `gripper_opening` and `fingertip_depth` are. None without fingers."""
+        if self._fingers is None:
+            return None
+        values = self._fingers.at(float(t))
+        size = _measure.gripper_size(self._pb, self._client, self._robot, self._fingers,
+                                     self.chain, self._tool_index, self.start,
+                                     values=dict(zip(self.finger_links, values, strict=True)))
+        if size is None:
+            return None
+        return values, size[0], size[1]
+
     @property
     def fingertip_depth(self) -> float | None:
         """How far (m) the open fingertips reach beyond the tool origin along the

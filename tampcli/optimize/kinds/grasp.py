@@ -98,9 +98,8 @@ class Grasp(ModeKind):
         return step
 
     def grip(self, problem, step, choice):
-        world = problem.world
         return F.family_of(choice).grip(problem.bodies[step.obj], choice,
-                                        world.fingertip_depth or 0.0, problem.options.margin)
+                                        problem.hand.depth, problem.options.margin)
 
     def final_rows(self, walk, step):
         walk.state.pop(step.obj, None)

@@ -130,7 +130,7 @@ class Move(ModeKind):
             low = walk.gripped(k, grip_step)[4]
             depth = problem.bodies[name].half[2]
         else:
-            low, depth = tool, problem.world.fingertip_depth or 0.0
+            low, depth = tool, problem.hand.depth
         g = np.zeros((1, 12))
         g[0, 2] = 1.0
         walk.rows.ineq.add(np.array([low.pos[2] - depth - floor]), low.through(g),

@@ -119,7 +119,7 @@ def face_grip(problem, step, choice):
         if lift is None:
             raise ValueError(f"{step.name}: {step.obj} is too low for a level hand")
         return level_face_grip(face, lift, choice.reach,
-                               problem.world.fingertip_depth or 0.0)
+                               problem.hand.depth)
     return arm_face_grip(face, choice.reach)
 
 

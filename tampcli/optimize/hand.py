@@ -1,0 +1,130 @@
+"""The hand's opening for one skeleton: the fingers opened only as wide as the
+widest object it grasps needs, not fully.
+
+An arm's fingers stand open at every keyframe and along every motion of a
+plan (they close on an object only in the replay): the collision rows, the
+grasp's depth and the solution's finger columns all take the hand at one
+opening. Fully open, a Panda's fingers reach 5.7 cm from the tool's axis; a
+2.4 cm bar 6.5 cm from a bin's rim could not be picked across that axis
+(blind10 p05), and a finger beside a box packed among others starts inside
+its neighbour. So a skeleton's hand opens to the widest closing width among
+its grasps grip, as the keyframe guess chose their faces
+(grasp_families.closing_width of each choice), plus CLEARANCE on either
+side, measured on the arm's own finger shapes (World.gripper_at). The
+keyframe NLP and the path stage take the hand so; the guess, choosing,
+takes it open (a grip it scores as clashing there is only tried later).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+import numpy as np
+
+from tampcli.optimize import grasp_families as F
+from tampcli.solution_read import FINGERED_MODELS
+
+# m, between each finger and the object at a grasp: twice GRIPPER_SLACK's 2.5 mm a
+# side, which the widest objects the open hand takes already leave and the physics
+# replay closes from.
+CLEARANCE = 0.006
+_BISECTIONS = 30
+
+
+@dataclass(frozen=True)
+class Hand:
+    """The fingers as one skeleton keeps them."""
+
+    values: tuple[float, ...] | None  # finger joint values (World.finger_links); None: open
+    opening: float | None  # World.gripper_opening's measure at `values`; None: no fingers
+    depth: float  # how far the fingertips reach beyond the tool origin (m)
+
+
+def open_hand(world) -> Hand:
+    """The hand fully open (as loaded): the arm without a narrower need, or no fingers."""
+    return Hand(None, world.gripper_opening, world.fingertip_depth or 0.0)
+
+
+def grasp_width(problem, choices: dict) -> float | None:
+    """The widest closing width among the skeleton's grasps as `choices` (step ->
+    values.GripChoice) grip them; None when it grasps nothing (or no choice is made)."""
+    widths = [F.closing_width(problem.bodies[step.obj], choice.psi or 0.0)
+              for step in problem.steps if step.kind.fingers is True
+              and (choice := choices.get(step.index)) is not None]
+    return max(widths) if widths else None
+
+
+def hand_for(world, width: float | None, clearance: float = CLEARANCE) -> Hand:
+    """The hand opened to `width` + 2 `clearance` (the most closed fraction whose
+    measured opening is at least that), fully open when that is as wide as it goes
+    or `width` is None."""
+    full = open_hand(world)
+    if width is None or full.opening is None or width + 2 * clearance >= full.opening:
+        return full
+    need = width + 2 * clearance
+    lo, hi = 0.0, 1.0  # opening(lo) >= need > opening(hi)
+    if world.gripper_at(hi)[1] >= need:
+        lo = hi
+    else:
+        for _ in range(_BISECTIONS):
+            mid = 0.5 * (lo + hi)
+            if world.gripper_at(mid)[1] >= need:
+                lo = mid
+            else:
+                hi = mid
+    values, opening, depth = world.gripper_at(lo)
+    return Hand(values, opening, depth)
+
+
+def hand_of(problem, choices: dict) -> Hand:
+    """The hand for a skeleton whose grasps grip as `choices` say: open for the
+    planar robot and for an arm whose finger joints a solution file cannot give
+    (solution_read: there the fingers are open unless closed on what they hold)."""
+    world = problem.world
+    if problem.planar or world.gripper_opening is None \
+            or world.scene.robot.model not in FINGERED_MODELS:
+        return problem.hand
+    width = grasp_width(problem, choices)
+    key = None if width is None else round(width, 6)
+    if key not in problem.hands:
+        problem.hands[key] = hand_for(world, width)
+    return problem.hands[key]
+
+
+def with_hand(problem, choices: dict):
+    """`problem` with its hand (and its checker's fingers) as `hand_of` says."""
+    hand = hand_of(problem, choices)
+    if hand == problem.hand:
+        return problem
+    return dataclasses.replace(problem, hand=hand, checker=problem.checker.with_fingers(
+        hand.values))
+
+
+def hand_checker(problem, checker, choices: dict):
+    """`checker` with the fingers as `hand_of` says."""
+    return checker.with_fingers(hand_of(problem, choices).values)
+
+
+def finger_columns(problem, events, choices: dict, n: int) -> np.ndarray | None:
+    """(n, k) the solution's finger columns (World.finger_names) at each of its n
+    waypoints: the hand's opening, closed on a grasped object (touching it: its
+    closing width) from its grasp's waypoint to its place's. `events`: (waypoint
+    where a step ends, step) in order (assemble.assemble). None with the hand open
+    as loaded: the file then leaves the fingers out, which means the same."""
+    hand = problem.hand
+    if hand is None or hand.values is None:
+        return None
+    world = problem.world
+    k = len(world.finger_names)
+    opened = np.asarray(hand.values[:k], dtype=float)
+    out = np.tile(opened, (n, 1))
+    for at, step in events:
+        if step.kind.fingers is True:
+            choice = choices.get(step.index)
+            psi = choice.psi if choice is not None and choice.psi is not None else 0.0
+            width = F.closing_width(problem.bodies[step.obj], psi)
+            out[at:] = hand_for(world, width, clearance=0.0).values[:k]
+        elif step.kind.fingers is False:
+            out[at + 1:] = opened
+    return out
