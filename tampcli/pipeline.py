@@ -364,7 +364,7 @@ def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result:
         trajectory=tuple(tuple(q) for q in trajectory),
         phases=tuple(p if isinstance(p, Phase) else Phase(*p) for p in best.phases),
         objects={k: [list(map(float, pose)) for pose in v] for k, v in best.object_poses.items()},
-        kkt=best.kkt, **common)
+        kkt=best.kkt, grasps=tuple(best.grasp_report), **common)
 
 
 def _stats(timers: Timers, extra: dict) -> dict:

@@ -72,6 +72,7 @@ class Solution:
     objective: float | None = None  # cost + symbolic_weight * symbolic_cost
     symbolic_weight: float | None = None
     kkt: KktStages = KktStages()  # the answer's NLPs, one certificate per stage
+    grasps: tuple = ()  # per grasp action: how it holds its object (optimize/grasp_report.py)
 
     @property
     def solved(self) -> bool:
@@ -129,6 +130,7 @@ def to_dict(solution: Solution) -> dict[str, Any]:
         ],
         "stats": solution.stats,
         "kkt": stages_to_dict(solution.kkt),
+        "grasps": [dict(g) for g in solution.grasps],
     }
 
 

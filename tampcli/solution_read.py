@@ -89,8 +89,20 @@ def read_solution(path: str | Path) -> SolutionFile:
         skeletons=_skeletons(data["skeletons"], path), stats=data["stats"],
         modes=data.get("modes"), objective=data.get("objective"),
         symbolic_weight=data.get("symbolic_weight"),
-        kkt=stages_from_dict(data.get("kkt"), path, "kkt"))
+        kkt=stages_from_dict(data.get("kkt"), path, "kkt"),
+        grasps=_grasps(data.get("grasps"), path))
     return check_solution(raw, path)
+
+
+def _grasps(value, path: str) -> tuple[dict, ...]:
+    """The optional `grasps` list (what solve reports of each grasp; nothing checks
+    or uses it downstream): a list of objects, or absent."""
+    if value is None:
+        return ()
+    if not isinstance(value, list) or not all(isinstance(g, dict) for g in value):
+        raise SolutionFileError(f"expected a list of objects, found {value!r}"[:200], path,
+                                key="grasps")
+    return tuple(value)
 
 
 def check_solution(sol: Solution, path: str = "<solution>") -> SolutionFile:

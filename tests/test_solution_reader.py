@@ -29,6 +29,8 @@ def planar(trajectory, phases, poses) -> dict:
         "phases": [{"action": a, "start": s, "end": e, "attached": h} for a, s, e, h in phases],
         "objects": {"a": [list(p) for p in poses]},
         "skeletons": [], "stats": {}, "kkt": {},
+        "grasps": [{"action": PLAN[0], "object": "a", "family": "suction",
+                    "contact_angle": 0.5}],
     }
 
 
@@ -67,6 +69,15 @@ def test_what_solve_writes_round_trips_and_is_already_canonical(tmp_path):
     assert checked.raw == written and checked.canonical == written
     assert checked.boundaries == (0, 1, 2, 3, 4) and checked.fingers is None
     assert checked.retreat is None
+
+
+def test_grasps_are_optional_and_a_list_of_objects(tmp_path):
+    data = copy.deepcopy(SOLVE_SHAPE)
+    assert read(tmp_path, data).raw.grasps[0]["contact_angle"] == 0.5
+    del data["grasps"]  # a file another planner wrote
+    assert read(tmp_path, data).raw.grasps == ()
+    data["grasps"] = {"(pick a)": "top"}
+    fails(tmp_path, data, "grasps", "expected a list of objects")
 
 
 def test_three_motions_between_two_actions_are_one(tmp_path):

@@ -13,6 +13,7 @@ from tampcli.bnb import BnBOptions, Event
 from tampcli.bnb.values import DEFAULT_SKELETONS
 from tampcli.errors import ExitCode, OptionError, UsageError
 from tampcli.optimize.backends import BACKENDS
+from tampcli.optimize.grasp_report import grasp_words
 from tampcli.optimize.options import OptimizeOptions
 from tampcli.pipeline import InputPaths, SolveOptions, solving
 
@@ -175,6 +176,8 @@ def _summary(sol, ui, args) -> None:
         if sol.scene is not None:
             ui.info(f"solved: trajectory cost {sol.cost:.4f}, objective {sol.objective:.4f}, "
                     f"{len(sol.trajectory)} waypoints")
+            for entry in sol.grasps:
+                ui.info(f"grasp {grasp_words(entry)}")
             _certificate(sol, ui)
     else:
         ui.error(f"{sol.status}: {sol.reason}")

@@ -11,6 +11,7 @@ import time
 from tampcli.optimize import relocate
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
+from tampcli.optimize.grasp_report import grasp_report
 from tampcli.optimize.hand import finger_columns, with_hand
 from tampcli.optimize.keyframe_stage import (
     face_grips,
@@ -158,6 +159,7 @@ def _path_through(run: Run, kfr) -> TrajectoryResult:
                             kkt=dataclasses.replace(kfr.kkt, path=combined(kkts.values())),
                             trajectory=traj, fingers=finger_columns(problem, events, choices,
                                                                     len(traj)),
+                            grasp_report=grasp_report(problem, choices, kf),
                             phases=phases, object_poses=poses, keyframes=kf, choices=choices,
                             placements=kfr.placements, grasps=grasps)
         # Judged with the fingers as the solution gives them (closed on what is held).

@@ -56,6 +56,7 @@ class TrajectoryResult:
     # (waypoints, k) the finger joints (World.finger_names) at each waypoint where the
     # hand is not open as loaded (optimize/hand.py); None: open unless closed on an object
     fingers: np.ndarray | None = field(default=None, repr=False)
+    grasp_report: tuple = ()  # grasp_report.grasp_report: how each grasp holds its object
     phases: tuple = ()  # tampcli.solution.Phase
     object_poses: dict = field(default_factory=dict, repr=False)  # name -> [7-vector]
     # Warm starts for a later stage or a longer skeleton:

@@ -108,3 +108,13 @@ def test_the_finger_columns_close_on_the_bar_while_it_is_held(bar, solved):
     assert np.allclose(fingers[grasp_at:place_at + 1], touching)
     assert np.allclose(fingers[:grasp_at], narrowed.hand.values)
     assert np.allclose(fingers[place_at + 1:], narrowed.hand.values)
+
+
+def test_the_report_says_which_faces_the_fingers_close_on(bar, solved):
+    (entry,) = solved.grasp_report
+    assert entry["action"] == "(pick-up bar-2 mat)" and entry["object"] == "bar-2"
+    # The grip across the bar's 2.4 cm (its y faces: it is 6.8 cm along x), the only
+    # one clear of the rim; the hand opened for it.
+    assert entry["faces"] == "±y" and entry["width"] == pytest.approx(0.024)
+    assert entry["hand_opening"] == pytest.approx(0.024 + 2 * CLEARANCE, abs=1e-6)
+    assert (entry["pitch"] is None) == (entry["family"] == "top")
