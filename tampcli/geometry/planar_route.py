@@ -66,6 +66,17 @@ class RouteOptions:
 
 
 @dataclass(frozen=True)
+class Route:
+    """`points` (K, 2): the route's vertices, the ends included; `least` (m): the
+    least distance of any pair at its grid points away from the ends (capped at
+    comfort + clearance): under the optimizer's margin, the passage is narrower than
+    twice the margin."""
+
+    points: np.ndarray
+    least: float
+
+
+@dataclass(frozen=True)
 class _Grid:
     """Points (nx * ny, 2), x-major, and their slack: the least distance of any pair
     less the distance that pair must keep there (capped at comfort)."""
@@ -95,8 +106,8 @@ class _Grid:
 
 def planar_route(checker, q_start, q_goal, lower, upper, *, body_poses=None, held=None,
                  ignore: frozenset[str] = frozenset(),
-                 options: RouteOptions = RouteOptions()) -> np.ndarray | None:
-    """Vertices (K, 2) of a route from q_start to q_goal, every grid edge on it valid
+                 options: RouteOptions = RouteOptions()) -> Route | None:
+    """A route from q_start to q_goal, every grid edge on it valid
     by the slack at its ends (Lipschitz) or, where the grid has no route so, by
     checks at `fine` steps, and the ends' edges checked at `fine` steps; None where
     the grid has none."""
@@ -144,7 +155,12 @@ def planar_route(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
         return None
     points = np.array([q_start if k == graph.n else q_goal if k == graph.n + 1
                        else grid.at(k) for k in chain])
-    return _pulled(points, grid, options)
+    flat = grid.slack.reshape(-1)
+    away = [flat[k] for k, p in zip(chain, points, strict=True) if k < graph.n
+            and min(np.linalg.norm(p - q_start), np.linalg.norm(p - q_goal))
+            > options.endpoint_slack]
+    least = options.clearance + min(away, default=options.comfort)
+    return Route(_pulled(points, grid, options), float(least))
 
 
 def _level(found) -> list:

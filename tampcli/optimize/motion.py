@@ -66,7 +66,8 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
 def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """One motion's path NLP under the margin schedule.
 
-    From the via-point start with the options' margin; where that fails, from
+    From the via-point start (the planar robot's: its grid route, planar_route.py)
+    with the options' margin; where that fails, from
     a sampled path (RRT-Connect over the same collision model, which finds
     passages the NLP's gradients cannot: pushed against both walls at once it
     stalls), first with the margin, then with `tight_margin`, so a passage
@@ -91,6 +92,7 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
             out = _solve_phase(run, ctx, len(warm) + 1, checks, label, warm.reshape(-1), margin)
             if out.status == "solved" or time.perf_counter() > run.deadline:
                 return out
+    margin = opts.margin  # the first start's
     if problem.motions[ctx.index].pushes:
         # A push slides along its support in a straight line (a bend would be a drag):
         # no lift above the obstacles, no detour around the object it pushes.
@@ -103,12 +105,17 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     elif problem.planar and (route := _planar_route(run, ctx)) is not None:
         # The plane's grid route, clear of the walls with the margin, however many it
         # turns around; its segments no longer than the disk is wide.
-        T = planar_segments(route, T, problem.scene.robot.radius)
-        x0 = resample(route, T + 1)[1:-1].reshape(-1)
+        T = planar_segments(route.points, T, problem.scene.robot.radius)
+        x0 = resample(route.points, T + 1)[1:-1].reshape(-1)
+        if route.least < opts.margin:
+            # Its passage is narrower than twice the margin, which no path through it
+            # keeps (robust-planar p03: a doorway with 5 mm a side; from the margin,
+            # then from a sampled path, 3 s lost).
+            margin = opts.tight_margin
     else:
         x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved,
                         run.rng, ctx.held).reshape(-1)
-    out = _solve_phase(run, ctx, T, checks, label, x0, opts.margin)
+    out = _solve_phase(run, ctx, T, checks, label, x0, margin)
     if out.status == "solved" or time.perf_counter() > run.deadline:
         return out
     if problem.motions[ctx.index].pushes:
@@ -124,7 +131,7 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
             return out
         sampled = _sampled_start(run, ctx, 1.0 - FIRST_SHARE)
     if sampled is None:
-        tries = [(x0, opts.tight_margin)]
+        tries = [(x0, opts.tight_margin)] if margin != opts.tight_margin else []
     else:
         # A sampled path with more corners than the motion has waypoints would be cut
         # short between them, through the walls it went around (blind7 p03: a maze's
@@ -132,9 +139,9 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         T = (planar_segments(sampled, T, problem.scene.robot.radius) if problem.planar
              else segments_for(sampled, T))
         sampled = resample(sampled, T + 1)[1:-1].reshape(-1)
-        tries = [(sampled, opts.margin), (sampled, opts.tight_margin)]
-    for start, margin in tries:
-        out = _solve_phase(run, ctx, T, checks, label, start, margin)
+        tries = [(sampled, m) for m in dict.fromkeys((margin, opts.tight_margin))]
+    for start, again in tries:
+        out = _solve_phase(run, ctx, T, checks, label, start, again)
         if out.status == "solved" or time.perf_counter() > run.deadline:
             return out
     return _clear_anyway(run, ctx, T, checks, label, out)
