@@ -9,19 +9,21 @@ shortest path over that grid (Dijkstra), each step dearer the nearer it is to
 something (at `comfort` and beyond it costs its length), then pulled straight
 where the distances allow.
 
-Why: a path NLP started from a straight line bent around one body, or from a
-sampled path that grazes every corner it turns (RRT-Connect keeps the tight
-margin only), has waypoints far apart at the walls' ends and starts infeasible
-with the margin there; SLSQP's steps then pull its sample points through a thin
-wall (gen1 planar-s02: a carry around two staggered partitions, 7 cm deep in a
-wall). A route through the middle of the passages is feasible with the margin
-from the start, however many walls it turns around.
+Why: the via-point start bends the straight line round the first body it
+crosses only (and runs through the next wall), and RRT-Connect's path grazes
+each corner it turns (it keeps the tight margin), its few vertices far apart;
+from either, on 10 segments, the path NLP of gen1 planar-s02's carry round two
+staggered partitions ended 5 to 7 cm inside a wall. From a route through the
+middle of the passages, on segments no longer than the disk is wide, with rows
+at every sample point from the first solve (motion.py), it solves at once.
 
 Validity is the sampled planner's (sampled_path.py): every pair at least
 `clearance` apart, except within `endpoint_slack` of either end, where a pair
 closer than that at the end may stay as close as it is there. The ends join the
-grid along straight edges checked at `fine` steps. The route is a start for the
-NLP, which with the zero-margin check at 10x stays the judge.
+grid along straight edges checked at `fine` steps. (Near the ends the floors
+differ from pair to pair, and the Lipschitz bound is an estimate there.) The
+route is a start for the NLP, which with the zero-margin check at 10x stays the
+judge.
 """
 
 from __future__ import annotations
