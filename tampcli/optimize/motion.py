@@ -8,10 +8,12 @@ checker and kinematics, and `path_nlp` (one counted solve by the options' backen
 from __future__ import annotations
 
 import dataclasses
+import math
 import time
 
 import numpy as np
 
+from tampcli.geometry.planar_route import RouteOptions, planar_route
 from tampcli.geometry.sampled_path import resample, sampled_path
 from tampcli.optimize import relocate
 from tampcli.optimize.approach import joined, lift, place_approach
@@ -33,6 +35,7 @@ SEED_BAND = 0.03  # m: a point between waypoints this close at the start has row
 # the rest for everything in place again.
 FIRST_SHARE = 0.25
 MAX_SEGMENTS_RATIO = 4  # a motion's segments at most, as a multiple of `waypoints`
+ROUTE_ROOM = 0.03  # m: beyond the margin, the clearance a planar route pays nothing for
 
 
 def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
@@ -63,7 +66,8 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
 def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """One motion's path NLP under the margin schedule.
 
-    From the via-point start with the options' margin; where that fails, from
+    From the via-point start (the planar robot's: its grid route, planar_route.py)
+    with the options' margin; where that fails, from
     a sampled path (RRT-Connect over the same collision model, which finds
     passages the NLP's gradients cannot: pushed against both walls at once it
     stalls), first with the margin, then with `tight_margin`, so a passage
@@ -88,6 +92,7 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
             out = _solve_phase(run, ctx, len(warm) + 1, checks, label, warm.reshape(-1), margin)
             if out.status == "solved" or time.perf_counter() > run.deadline:
                 return out
+    margin = opts.margin  # the first start's
     if problem.motions[ctx.index].pushes:
         # A push slides along its support in a straight line (a bend would be a drag):
         # no lift above the obstacles, no detour around the object it pushes.
@@ -97,10 +102,20 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         # start closer to the optimum than a lift over everything (arm-kitchen's
         # motions: 2 or 3 SLSQP iterations from it, 11 to 14 from the lift).
         x0 = line.x
+    elif problem.planar and (route := _planar_route(run, ctx)) is not None:
+        # The plane's grid route, clear of the walls with the margin, however many it
+        # turns around; its segments no longer than the disk is wide.
+        T = planar_segments(route.points, T, problem.scene.robot.radius)
+        x0 = resample(route.points, T + 1)[1:-1].reshape(-1)
+        if route.least < opts.margin:
+            # Its passage is narrower than twice the margin, which no path through it
+            # keeps (robust-planar p03: a doorway with 5 mm a side; from the margin,
+            # then from a sampled path, 3 s lost).
+            margin = opts.tight_margin
     else:
         x0 = via_points(problem, ctx.q_a, ctx.q_b, T, held_height, ctx.moved,
                         run.rng, ctx.held).reshape(-1)
-    out = _solve_phase(run, ctx, T, checks, label, x0, opts.margin)
+    out = _solve_phase(run, ctx, T, checks, label, x0, margin)
     if out.status == "solved" or time.perf_counter() > run.deadline:
         return out
     if problem.motions[ctx.index].pushes:
@@ -116,16 +131,17 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
             return out
         sampled = _sampled_start(run, ctx, 1.0 - FIRST_SHARE)
     if sampled is None:
-        tries = [(x0, opts.tight_margin)]
+        tries = [(x0, opts.tight_margin)] if margin != opts.tight_margin else []
     else:
         # A sampled path with more corners than the motion has waypoints would be cut
         # short between them, through the walls it went around (blind7 p03: a maze's
         # 12 corners on 10 segments): the motion gets the segments its path needs.
-        T = segments_for(sampled, T)
+        T = (planar_segments(sampled, T, problem.scene.robot.radius) if problem.planar
+             else segments_for(sampled, T))
         sampled = resample(sampled, T + 1)[1:-1].reshape(-1)
-        tries = [(sampled, opts.margin), (sampled, opts.tight_margin)]
-    for start, margin in tries:
-        out = _solve_phase(run, ctx, T, checks, label, start, margin)
+        tries = [(sampled, m) for m in dict.fromkeys((margin, opts.tight_margin))]
+    for start, again in tries:
+        out = _solve_phase(run, ctx, T, checks, label, start, again)
         if out.status == "solved" or time.perf_counter() > run.deadline:
             return out
     return _clear_anyway(run, ctx, T, checks, label, out)
@@ -139,6 +155,29 @@ def segments_for(path: np.ndarray, T: int) -> int:
     if edges <= T:
         return T
     return max(edges, min(2 * edges, MAX_SEGMENTS_RATIO * T))
+
+
+def planar_segments(path: np.ndarray, T: int, radius: float) -> int:
+    """Segments of a planar motion started from `path`: `segments_for`'s, and at least
+    as many as make each no longer than the disk's diameter (up to MAX_SEGMENTS_RATIO
+    * T). Waypoints 30 cm apart at a wall's end let SLSQP's first steps carry the
+    sample points between them through it (gen1 planar-s02: a 2.9 m carry round two
+    partitions on 10 segments failed from a valid start, on 30 solved)."""
+    length = float(np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)))
+    wide = min(math.ceil(length / (2.0 * radius)), MAX_SEGMENTS_RATIO * T)
+    return max(segments_for(path, T), wide)
+
+
+def _planar_route(run, ctx):
+    """The planar robot's grid route (geometry/planar_route.py) of this motion, clear
+    by the options' margin where it can be, or None."""
+    problem = run.problem
+    opts = problem.options
+    m = problem.motions[ctx.index]
+    options = RouteOptions(clearance=opts.tight_margin, comfort=opts.margin + ROUTE_ROOM)
+    return planar_route(run.checker, ctx.q_a, ctx.q_b, problem.world.lower,
+                        problem.world.upper, body_poses=ctx.moved, held=held_spec(ctx.held),
+                        ignore=allowed_contacts(m), options=options)
 
 
 def _straight_line(run, ctx, T: int, checks: int, label: str):
@@ -238,7 +277,15 @@ def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
                       strict=True))
     coarse, layout = rows(0)
     kept: set[float] = set()
-    if checks:
+    if checks and problem.planar and not m.pushes:
+        # The planar robot's rows are cheap (a disk and what it holds), and a start that
+        # keeps clear of the walls (a route through the middle of the passages) has no
+        # point near anything: with rows at its waypoints only, SLSQP pulls each segment
+        # taut across the walls' ends between them (gen1 planar-s02, a carry round two
+        # partitions: 7 cm into a wall from a start 4 cm clear). Every point from the
+        # first solve (not for a push: its start is its straight line, whatever it meets).
+        coarse, _ = rows(checks)
+    elif checks:
         # Points between waypoints already near something at the start keep their rows
         # from the first solve: with waypoints only, SLSQP's first steps can put two
         # waypoints on either side of a thin obstacle (a block just set down), and the

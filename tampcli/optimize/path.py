@@ -295,7 +295,10 @@ def _lifted(world, up: np.ndarray, out: tuple, rng_seed: int) -> list[np.ndarray
 
 
 def _planar_detour(problem, q_a, q_b, T, moved) -> np.ndarray:
-    """Straight line, bent around the first body it would cross (side chosen by clearance)."""
+    """Straight line, bent around the first body it would cross (side chosen by clearance).
+
+    Only where motion.py's grid route (geometry/planar_route.py) finds nothing: a
+    passage narrower than the grid's step. Round a second wall it runs through it."""
     radius = problem.scene.robot.radius
     taus = np.arange(1, T) / T
     line = q_a + np.outer(taus, q_b - q_a)

@@ -152,7 +152,12 @@ def test_move_ends_with_the_tool_in_the_region(planar):
     result = solve(problem, "path")
     assert result.solved, result.worst_constraint
     assert [p.action for p in result.phases] == ["(goto goal)"]
-    assert result.phases[0].end - result.phases[0].start == problem.options.waypoints
+    # Round the pillar, the planar route's segments are no longer than the disk is wide
+    # (motion.planar_segments): at least `waypoints` of them.
+    segments = result.phases[0].end - result.phases[0].start
+    assert problem.options.waypoints <= segments <= 4 * problem.options.waypoints
+    steps = np.linalg.norm(np.diff(result.trajectory, axis=0), axis=1)
+    assert steps.max() <= 2 * 2 * scene.robot.radius
     region = scene.region("goal")
     end = result.trajectory[-1]
     assert np.all(np.abs(end - np.array(region.center)) <= 0.5 * np.array(region.size) + 1e-6)
