@@ -79,11 +79,16 @@ def hand_for(world, width: float | None, clearance: float = CLEARANCE) -> Hand:
 
 def hand_of(problem, choices: dict) -> Hand:
     """The hand for a skeleton whose grasps grip as `choices` say: open for the
-    planar robot and for an arm whose finger joints a solution file cannot give
-    (solution_read: there the fingers are open unless closed on what they hold)."""
+    planar robot, for an arm whose finger joints a solution file cannot give
+    (solution_read: there the fingers are open unless closed on what they hold)
+    and for a skeleton with a push."""
     world = problem.world
     if problem.planar or world.gripper_opening is None \
-            or world.scene.robot.model not in FINGERED_MODELS:
+            or world.scene.robot.model not in FINGERED_MODELS \
+            or any(m.pushes for m in problem.motions):
+        # A push's contact is modelled on the open fingers (kinds/push_contact.py), and
+        # `validate` checks it so (blind10 p08: narrowed, the pusher ended 1 mm inside
+        # its crate by validate's open-handed check).
         return problem.hand
     width = grasp_width(problem, choices)
     key = None if width is None else round(width, 6)

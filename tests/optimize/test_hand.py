@@ -118,3 +118,18 @@ def test_the_report_says_which_faces_the_fingers_close_on(bar, solved):
     assert entry["faces"] == "±y" and entry["width"] == pytest.approx(0.024)
     assert entry["hand_opening"] == pytest.approx(0.024 + 2 * CLEARANCE, abs=1e-6)
     assert (entry["pitch"] is None) == (entry["family"] == "top")
+
+
+def test_a_plan_with_a_push_keeps_the_hand_open():
+    """blind10 p08: a cup picked, a crate pushed; the push's contact is modelled on
+    the open fingers, and validate checks it so."""
+    folder = FOLDER.parent / "p08"
+    skeleton = ops("(grab cup lane)", "(stow cup spare)", "(shove crate c-home lane bay)",
+                   "(grab tag rack)", "(perch tag crate bay)")
+    with lowered_folder(folder, "p08", skeleton) as problem:
+        grasps = [s for s in problem.steps if s.kind.fingers is True]
+        assert grasps and hand_of(problem, {}) == problem.hand
+        first = solve(problem, "keyframes")
+        assert first.solved
+        assert grasp_width(problem, first.choices) is not None  # it grasps...
+        assert hand_of(problem, first.choices).values is None  # ...and stays open
