@@ -98,6 +98,9 @@ BLIND11 = {"p01": ("thin slab by a wall", 2), "p02": ("into a packed row", 2),
            "p03": ("can among cylinders", 2), "p04": ("blocker cleared first", 6),
            "p05": ("stack of three", 6), "p06": ("push then pick", 3),
            "p07": ("typed forall/exists", 6), "p08": ("cyclic swap", 8)}
+BLIND12 = {"p01": ("thin slab by a wall", 2), "p02": ("bar by a bin wall (KUKA)", 2),
+           "p03": ("carton into a packed row", 2), "p04": ("spool between taller ones", 2),
+           "p05": ("key out of a slot", 2), "p06": ("wide and thin in one plan", 4)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -124,6 +127,7 @@ def problems() -> list[tuple[str, str, str, int]]:
     rows += [("blind9", stem, cls, n) for stem, (cls, n) in sorted(BLIND9.items())]
     rows += [("blind10", stem, cls, n) for stem, (cls, n) in sorted(BLIND10.items())]
     rows += [("blind11", stem, cls, n) for stem, (cls, n) in sorted(BLIND11.items())]
+    rows += [("blind12", stem, cls, n) for stem, (cls, n) in sorted(BLIND12.items())]
     rows += [("gen1", stem, cls, n) for stem, (cls, n) in sorted(GEN1.items())]
     return rows
 
