@@ -1,14 +1,14 @@
 """The hand's opening for one skeleton: the fingers opened only as wide as the
 widest object it grasps needs, not fully.
 
-An arm's fingers stand open at every keyframe and along every motion of a
-plan (they close on an object only in the replay): the collision rows, the
-grasp's depth and the solution's finger columns all take the hand at one
-opening. Fully open, a Panda's fingers reach 5.7 cm from the tool's axis; a
-2.4 cm bar 6.5 cm from a bin's rim could not be picked across that axis
-(blind10 p05), and a finger beside a box packed among others starts inside
-its neighbour. So a skeleton's hand opens to the widest closing width among
-its grasps grip, as the keyframe guess chose their faces
+The optimizer takes an arm's fingers at one opening at every keyframe and
+along every motion: the collision rows and the grasp's depth use it, and
+the solution's finger columns give it (closed on what is held from each
+grasp to its place). Fully open, a Panda's fingers reach 6.6 cm from the
+tool's axis; a 2.4 cm bar 6 cm from a bin's rim could not be picked across
+that axis (blind10 p05), and a finger beside a box packed among others
+starts inside its neighbour. So a skeleton's hand opens to the widest
+closing width among its grasps, as the keyframe guess chose their faces
 (grasp_families.closing_width of each choice), plus CLEARANCE on either
 side, measured on the arm's own finger shapes (World.gripper_at). The
 keyframe NLP and the path stage take the hand so; the guess, choosing,
