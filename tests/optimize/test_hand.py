@@ -9,6 +9,7 @@ end). Opened to the bar's width and 6 mm a side, the fingers stand clear.
 
 from __future__ import annotations
 
+from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -23,6 +24,26 @@ from .helpers import lowered_folder, ops
 FOLDER = Path(__file__).resolve().parents[2] / "problems" / "blind10" / "p05"
 SKELETON = ops("(pick-up bar-2 mat)", "(bin-bar bar-2 bin-r)")
 RIM = "bin-r-tray-rim-w"
+
+
+@contextmanager
+def lowered_library(folder: Path, domain_folder: Path, stem: str, skeleton):
+    """A library problem (its domain and modes in domains/, the rest in problems/),
+    `skeleton` lowered on its own World and CollisionChecker."""
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.scene import load_scene
+    from tampcli.geometry.world import World
+    from tampcli.optimize.modes import load_modes
+    from tampcli.optimize.problem import lower
+    from tampcli.pddl import parser
+
+    domain = parser.parse_domain_file(domain_folder / "domain.pddl")
+    problem = parser.parse_problem_file(folder / f"{stem}.pddl")
+    scene = load_scene(folder / f"{stem}.scene.toml", domain, problem)
+    modes = load_modes(domain_folder / "modes.toml", domain)
+    with World(scene) as world:
+        yield lower(skeleton, scene, modes, world, domain=domain,
+                    checker=CollisionChecker(world))
 
 
 @pytest.fixture(scope="module")
@@ -133,3 +154,32 @@ def test_a_plan_with_a_push_keeps_the_hand_open():
         assert first.solved
         assert grasp_width(problem, first.choices) is not None  # it grasps...
         assert hand_of(problem, first.choices).values is None  # ...and stays open
+
+
+def test_an_object_straddled_by_mm_keeps_half_that_on_the_way_down():
+    """arm-pick-place p01: the hand opened 6 mm a side of the 5 cm cube. The approach
+    keeps half the keyframe's distance to the cube before its last segment, not the
+    1 cm margin (which only a detour could keep: arm-kitchen's motions then cost up
+    to 7 times their straight line)."""
+    from tampcli.optimize.assemble import walk
+    from tampcli.optimize.path import motion_margins
+
+    folder = FOLDER.parents[1] / "arm-pick-place"
+    domain = FOLDER.parents[2] / "domains" / "arm-pick-place"
+    skeleton = ops("(pick a start)", "(place a goal)")
+    with lowered_library(folder, domain, "p01", skeleton) as problem:
+        kfr = solve(problem, "keyframes")
+        narrowed = with_hand(problem, kfr.choices)
+        ctx = walk(narrowed, kfr.keyframes, kfr.choices, problem.world.start)[0]
+        m = narrowed.motions[0]
+        opts = narrowed.options
+        d = narrowed.checker.min_distance(ctx.q_b, ctx.moved, None, frozenset(), static=False)
+        assert 2 * opts.tight_margin < d < opts.margin  # straddled with millimetres
+        own = motion_margins(narrowed.checker, m, ctx.q_a, ctx.q_b, None, ctx.moved,
+                             opts.margin, opts.tight_margin)
+        assert own.near["a"] == pytest.approx(d / 2, abs=1e-6)
+        path = solve(problem, "path", warm=kfr)
+        assert path.solved
+        # No detour: within 1 % of the straight line's |dq|^2 / T, the least there is.
+        dq = np.asarray(ctx.q_b) - np.asarray(ctx.q_a)
+        assert path.phase_costs[0] == pytest.approx(float(dq @ dq) / opts.waypoints, rel=0.01)
