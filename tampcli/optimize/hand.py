@@ -90,10 +90,14 @@ def hand_of(problem, choices: dict) -> Hand:
         # `validate` checks it so (blind10 p08: narrowed, the pusher ended 1 mm inside
         # its crate by validate's open-handed check).
         return problem.hand
-    width = grasp_width(problem, choices)
-    key = None if width is None else round(width, 6)
+    return _cached(problem, grasp_width(problem, choices), CLEARANCE)
+
+
+def _cached(problem, width: float | None, clearance: float) -> Hand:
+    """hand_for, kept in the problem's `hands` (a bisection of World measurements)."""
+    key = (None if width is None else round(width, 6), clearance)
     if key not in problem.hands:
-        problem.hands[key] = hand_for(world, width)
+        problem.hands[key] = hand_for(problem.world, width, clearance)
     return problem.hands[key]
 
 
@@ -129,7 +133,7 @@ def finger_columns(problem, events, choices: dict, n: int) -> np.ndarray | None:
             choice = choices.get(step.index)
             psi = choice.psi if choice is not None and choice.psi is not None else 0.0
             width = F.closing_width(problem.bodies[step.obj], psi)
-            out[at:] = hand_for(world, width, clearance=0.0).values[:k]
+            out[at:] = _cached(problem, width, 0.0).values[:k]
         elif step.kind.fingers is False:
             out[at + 1:] = opened
     return out

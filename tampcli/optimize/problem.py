@@ -44,7 +44,7 @@ class TrajectoryProblem:
     # optimize.hand.Hand: the fingers' opening throughout (`checker` holds them there);
     # open as lowered, narrowed to the grips chosen (hand.with_hand)
     hand: object = field(default=None, repr=False)
-    hands: dict = field(default_factory=dict, repr=False)  # hand.hand_of's, by width
+    hands: dict = field(default_factory=dict, repr=False)  # hand.hand_for's, by (width, clearance)
 
     @property
     def n(self) -> int:

@@ -65,6 +65,23 @@ def lowered_folder(folder: Path, stem: str, skeleton):
                     checker=CollisionChecker(world))
 
 
+@contextmanager
+def lowered_library(folder: Path, domain_folder: Path, stem: str, skeleton):
+    """A library problem (its domain and modes in domains/, the rest in problems/),
+    `skeleton` lowered on its own World and CollisionChecker."""
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.world import World
+    from tampcli.optimize.problem import lower
+
+    domain = parser.parse_domain_file(domain_folder / "domain.pddl")
+    problem = parser.parse_problem_file(folder / f"{stem}.pddl")
+    scene = _load_scene(folder / f"{stem}.scene.toml", domain, problem)
+    modes = _load_modes(domain_folder / "modes.toml", domain)
+    with World(scene) as world:
+        yield lower(skeleton, scene, modes, world, domain=domain,
+                    checker=CollisionChecker(world))
+
+
 def central_differences(f, x, h: float = 1e-6) -> np.ndarray:
     """The Jacobian of f (vector -> vector) at x by central differences, (m, n)."""
     cols = []

@@ -9,7 +9,6 @@ end). Opened to the bar's width and 6 mm a side, the fingers stand clear.
 
 from __future__ import annotations
 
-from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
@@ -19,31 +18,11 @@ from tampcli.optimize.grasp_families import closing_width
 from tampcli.optimize.hand import CLEARANCE, grasp_width, hand_for, hand_of, with_hand
 from tampcli.optimize.solve import solve
 
-from .helpers import lowered_folder, ops
+from .helpers import lowered_folder, lowered_library, ops
 
 FOLDER = Path(__file__).resolve().parents[2] / "problems" / "blind10" / "p05"
 SKELETON = ops("(pick-up bar-2 mat)", "(bin-bar bar-2 bin-r)")
 RIM = "bin-r-tray-rim-w"
-
-
-@contextmanager
-def lowered_library(folder: Path, domain_folder: Path, stem: str, skeleton):
-    """A library problem (its domain and modes in domains/, the rest in problems/),
-    `skeleton` lowered on its own World and CollisionChecker."""
-    from tampcli.geometry.collision import CollisionChecker
-    from tampcli.geometry.scene import load_scene
-    from tampcli.geometry.world import World
-    from tampcli.optimize.modes import load_modes
-    from tampcli.optimize.problem import lower
-    from tampcli.pddl import parser
-
-    domain = parser.parse_domain_file(domain_folder / "domain.pddl")
-    problem = parser.parse_problem_file(folder / f"{stem}.pddl")
-    scene = load_scene(folder / f"{stem}.scene.toml", domain, problem)
-    modes = load_modes(domain_folder / "modes.toml", domain)
-    with World(scene) as world:
-        yield lower(skeleton, scene, modes, world, domain=domain,
-                    checker=CollisionChecker(world))
 
 
 @pytest.fixture(scope="module")
