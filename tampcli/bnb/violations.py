@@ -22,6 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from tampcli.optimize.grips import Kinematics
+from tampcli.optimize.hand import with_hand
 from tampcli.optimize.nlp import FEASIBILITY
 from tampcli.optimize.result import TrajectoryResult
 from tampcli.optimize.stages import keyframe_rows
@@ -44,6 +45,8 @@ def violated_rows(problem, result: TrajectoryResult, kin: Kinematics) -> tuple[V
     the keyframe NLP, or another stage)."""
     if result.stage != "keyframes" or result.solved or not result.keyframes.q:
         return ()
+    if result.narrowed:
+        problem = with_hand(problem, result.choices)
     options = problem.options
     vals = result.keyframes.blocks()
     start = np.asarray(problem.world.start, dtype=float)

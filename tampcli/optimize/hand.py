@@ -93,6 +93,11 @@ def hand_of(problem, choices: dict) -> Hand:
     return _cached(problem, grasp_width(problem, choices), CLEARANCE)
 
 
+def narrows(problem, choices: dict) -> bool:
+    """Whether `hand_of` is narrower than the problem's hand for these choices."""
+    return hand_of(problem, choices) != problem.hand
+
+
 def _cached(problem, width: float | None, clearance: float) -> Hand:
     """hand_for, kept in the problem's `hands` (a bisection of World measurements)."""
     key = (None if width is None else round(width, 6), clearance)
@@ -108,11 +113,6 @@ def with_hand(problem, choices: dict):
         return problem
     return dataclasses.replace(problem, hand=hand, checker=problem.checker.with_fingers(
         hand.values))
-
-
-def hand_checker(problem, checker, choices: dict):
-    """`checker` with the fingers as `hand_of` says."""
-    return checker.with_fingers(hand_of(problem, choices).values)
 
 
 def finger_columns(problem, events, choices: dict, n: int) -> np.ndarray | None:

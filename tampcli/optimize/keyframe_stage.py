@@ -12,8 +12,10 @@ import numpy as np
 
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
+from tampcli.optimize.hand import narrows, with_hand
 from tampcli.optimize.init import keyframe_guess
 from tampcli.optimize.layout import grip_block, keyframe_block
+from tampcli.optimize.nlp import FEASIBILITY
 from tampcli.optimize.result import TrajectoryResult
 from tampcli.optimize.run import Run
 from tampcli.optimize.stages import final_layout, final_rows, keyframe_layout, keyframe_rows
@@ -109,15 +111,44 @@ def _shares_prefix(problem, warm) -> bool:
 
 
 def keyframes(run: Run, warm) -> TrajectoryResult:
-    """The keyframe NLP; where it fails, again with the planar suction grips kept at
+    """The keyframe NLP, the hand open (or as the warm start's prefix had it); where
+    that fails and the fingers are part of why, again with the hand narrowed to the
+    grips (hand.with_hand); where it fails still, with the planar suction grips kept at
     the middle of each face (`_face_grips`: a peg pushed into a socket by its back face)."""
     result = keyframes_with(run, warm)
+    if not result.solved and not result.proved and time.perf_counter() < run.deadline \
+            and _fingers_in_the_way(run, result):
+        again = keyframes_with(run, warm, narrow=True)
+        result = again if again.solved else result
     for grips in face_grips(run.problem, result):
         if result.solved or result.proved or time.perf_counter() > run.deadline:
             break
-        again = keyframes_with(run, warm, grips)
+        again = keyframes_with(run, warm, grips, narrow=result.narrowed)
         result = again if again.solved else result
     return result
+
+
+def _fingers_in_the_way(run: Run, failed: TrajectoryResult) -> bool:
+    """Whether the open hand's failed keyframes violate less with the hand narrowed to
+    their grips: the fingers are then part of what the NLP could not clear (blind10
+    p05: a bar beside a bin's rim, its fingers across the rim). One evaluation of the
+    rows, not an NLP, for a failure the hand has no part in."""
+    problem = run.problem
+    if failed.narrowed or not failed.keyframes.q or not narrows(problem, failed.choices):
+        return False
+    narrow = with_hand(problem, failed.choices)
+    vals = failed.keyframes.blocks()
+    total = [_total_violation(keyframe_rows(at, vals, failed.choices, run.kin, checker,
+                                            run.start, anchors=run.anchors))
+             for at, checker in ((problem, run.checker), (narrow, narrow.checker))]
+    return total[1] < total[0] - FEASIBILITY
+
+
+def _total_violation(rows) -> float:
+    """The rows' violations summed (m and rad)."""
+    eq = np.concatenate(rows.eq.values) if rows.eq.values else np.zeros(0)
+    ineq = np.concatenate(rows.ineq.values) if rows.ineq.values else np.zeros(0)
+    return float(np.abs(eq).sum() + np.maximum(-ineq, 0.0).sum())
 
 
 def reach(run: Run, warm) -> TrajectoryResult:
@@ -131,12 +162,16 @@ def reach(run: Run, warm) -> TrajectoryResult:
 
 def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
                     placements: dict | None = None, collisions: bool = True,
-                    retries: bool = True) -> TrajectoryResult:
+                    retries: bool = True, narrow: bool | None = None) -> TrajectoryResult:
     """`grips`: step -> a grip parameter the NLP keeps (the NLP's choice otherwise);
     `placements`: the final stage's values to use (solved from scratch otherwise);
     `collisions`: False for the relaxation (`reach`); `retries`: False for one NLP
-    from the guess (no jittered guess, no `tight_margin`)."""
+    from the guess (no jittered guess, no `tight_margin`); `narrow`: the hand narrowed
+    to the grips chosen (hand.with_hand), open when False, as the warm start's prefix
+    had it when None."""
     problem = run.problem
+    if narrow is None:
+        narrow = _shares_prefix(problem, warm) and warm.narrowed
     why = beyond_reach(problem)
     if why:
         return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
@@ -177,50 +212,52 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
         if grips:
             guess = Keyframes(guess.q, {**guess.grip, **grips})
 
-        def evaluate(x, choices=choices):
-            return keyframe_rows(problem, layout.unpack(x), choices, run.kin, run.checker,
+        at = with_hand(problem, choices) if narrow and collisions else problem
+        checker = run.checker if at is problem else at.checker
+
+        def evaluate(x, choices=choices, at=at, checker=checker):
+            return keyframe_rows(at, layout.unpack(x), choices, run.kin, checker,
                                  run.start, collisions=collisions, anchors=run.anchors)
 
         out = run.nlp(evaluate, layout, layout.pack(guess.blocks()), bounds)
         if best is None or (out.status == "solved") or out.violation < best[0].violation:
-            best = (out, choices)
+            best = (out, choices, at, checker)
         if out.status == "solved" or time.perf_counter() > run.deadline:
             break
-    out, choices = best
+    out, choices, at, checker = best
     if out.status != "solved" and collisions and retries and time.perf_counter() < run.deadline:
-        out = _tight_keyframes(run, layout, bounds, out, choices)
+        out = _tight_keyframes(run, layout, bounds, out, choices, at, checker)
     kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
     T = problem.options.waypoints
     phase_costs = kf.least_costs(run.start, T)
+    common = dict(keyframes=kf, choices=choices, placements=placements,
+                  narrowed=at is not problem)
     if out.status != "solved":
         return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
-                          keyframes=kf, choices=choices, placements=placements)
+                          **common)
     if out.stopped == "time":
         # Feasible but far from converged: its cost would be a meaningless bound.
-        return run.result("limit", violation=out.violation, keyframes=kf, choices=choices,
-                          placements=placements, worst_constraint="time limit reached before "
-                          "the keyframe NLP converged")
+        return run.result("limit", violation=out.violation, worst_constraint="time limit "
+                          "reached before the keyframe NLP converged", **common)
     return run.result("solved", cost=out.cost, phase_costs=phase_costs,
                       violation=out.violation,
-                      kkt=KktStages(final_kkt, out.kkt if collisions else None), keyframes=kf,
-                      choices=choices, placements=placements)
+                      kkt=KktStages(final_kkt, out.kkt if collisions else None), **common)
 
 
-def _tight_keyframes(run: Run, layout, bounds, out, choices):
+def _tight_keyframes(run: Run, layout, bounds, out, choices, at, checker):
     """The keyframe NLP again with `tight_margin`, from where it failed; `out` when
     that fails too. Whatever the row it failed on: a margin row held at the margin
     can block another (blind2 p07: a level hand 1 cm short of the garage region,
     held off the roof's edge), and the margin must never turn a feasible problem
     infeasible."""
-    problem = run.problem
-    opts = problem.options
+    opts = at.options
     if opts.tight_margin >= opts.margin:
         return out
-    tight = dataclasses.replace(problem, options=dataclasses.replace(
+    tight = dataclasses.replace(at, options=dataclasses.replace(
         opts, margin=opts.tight_margin))
 
     def evaluate(x):
-        return keyframe_rows(tight, layout.unpack(x), choices, run.kin, run.checker, run.start,
+        return keyframe_rows(tight, layout.unpack(x), choices, run.kin, checker, run.start,
                              anchors=run.anchors)
 
     retry = run.nlp(evaluate, layout, out.x, bounds)

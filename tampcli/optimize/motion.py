@@ -180,6 +180,14 @@ def _planar_route(run, ctx):
                         ignore=allowed_contacts(m), options=options)
 
 
+def _margins(run, ctx, margin: float, tight: float):
+    """path.motion_margins of the motion `ctx`, its straddle rule with a narrowed hand."""
+    hand = run.problem.hand
+    return motion_margins(run.checker, run.problem.motions[ctx.index], ctx.q_a, ctx.q_b,
+                          ctx.held, ctx.moved, margin, tight,
+                          straddle=hand is not None and hand.values is not None)
+
+
 def _straight_line(run, ctx, T: int, checks: int, label: str):
     """(outcome, violation) of the straight joint-space line at even steps, with the
     margin, at every sample point. Solved when feasible: its cost, sum |dq|^2, is
@@ -192,8 +200,7 @@ def _straight_line(run, ctx, T: int, checks: int, label: str):
     if m.pushes:
         return None, np.inf
     margin = problem.options.margin
-    own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, margin,
-                         min(margin, problem.options.tight_margin))
+    own = _margins(run, ctx, margin, min(margin, problem.options.tight_margin))
     rows, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
                                  run.checker, T, checks, ctx.rest_z, label, None, margin, own)
     x = np.linspace(ctx.q_a, ctx.q_b, T + 1)[1:-1].reshape(-1)
@@ -235,7 +242,7 @@ def _clear_anyway(run, ctx, T: int, checks: int, label: str, out):
     slack and the zero-margin check at 10x (`verify`) is the judge."""
     problem = run.problem
     m = problem.motions[ctx.index]
-    own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, 0.0, 0.0)
+    own = _margins(run, ctx, 0.0, 0.0)
     rows, layout = phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,
                                  run.checker, T, checks, ctx.rest_z, label, None, 0.0, own)
     if nlp_feasible(rows, layout, out.x):
@@ -266,8 +273,7 @@ def _solve_phase(run, ctx, T: int, checks: int, label: str, x0, margin: float):
     problem = run.problem
     m = problem.motions[ctx.index]
 
-    own = motion_margins(run.checker, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, margin,
-                         min(margin, problem.options.tight_margin))
+    own = _margins(run, ctx, margin, min(margin, problem.options.tight_margin))
 
     def rows(n_checks, keep=None):
         return phase_rows_fn(problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.kin,

@@ -202,7 +202,9 @@ class MotionMargins:
 
 
 def motion_margins(checker, m: MotionPhase, q_a, q_b, held, moved, margin: float,
-                   tight: float) -> MotionMargins:
+                   tight: float, straddle: bool = False) -> MotionMargins:
+    """`straddle`: the half-distance rule below for what the motion enters or leaves
+    (the hand narrowed to its grips, optimize/hand.py)."""
     ends = m.enter_contact | m.leave_contact
     found = checker.distances_many(np.array([q_a, q_b]), moved, held_spec(held),
                                    [allowed_contacts(m)] * 2, margin)
@@ -213,16 +215,17 @@ def motion_margins(checker, m: MotionPhase, q_a, q_b, held, moved, margin: float
             side[k] = min(side.get(k, np.inf), c.distance)
     near = {k: max(tight, min(least[0].get(k, margin), least[1].get(k, margin)) / 2)
             for side in least for k, d in side.items() if d < margin and k not in ends}
-    # What the motion enters or leaves without touching it there, nearer than the margin
-    # at that keyframe (fingers straddling an object with millimetres to spare), keeps
-    # half that distance outside the end segment too: held to the margin there, the
-    # hand could only come down on it in one long last segment (arm-kitchen with the
-    # hand opened 6 mm a side: a detour costing 7 times the straight line, 47 NLPs
-    # against 23). What it touches there (an object set down on another) keeps the
-    # margin until the end segment, which alone may come that close.
+    # With the hand narrowed, what the motion enters or leaves without touching it there,
+    # nearer than the margin at that keyframe (fingers straddling an object with
+    # millimetres to spare), keeps half that distance outside the end segment too: held
+    # to the margin there, the hand could only come down on it in one long last segment
+    # (arm-kitchen with the hand opened 6 mm a side: a detour costing 7 times the
+    # straight line, 47 NLPs against 23). What it touches there (an object set down on
+    # another) keeps the margin until the end segment, which alone may come that close.
     for keys, side in ((m.enter_contact, least[1]), (m.leave_contact, least[0])):
-        near.update({k: side[k] / 2 for k in keys
-                     if k in side and 2 * tight < side[k] < margin and k not in near})
+        if straddle:
+            near.update({k: side[k] / 2 for k in keys
+                         if k in side and 2 * tight < side[k] < margin and k not in near})
 
     def touch(keys, side):
         return {k: min(margin, side.get(k, margin)) - TOUCH_SLACK for k in keys}

@@ -56,7 +56,8 @@ def path(run: Run, warm) -> TrajectoryResult:
             run.stage = "keyframes"
             # A face tried first is a guess worth one NLP: where it fails, the NLP's
             # own angle comes next (planar-tamp p01: 0.8 s of retries for nothing).
-            start = keyframes_with(run, warm, grips, retries=result is not None)
+            start = keyframes_with(run, warm, grips, retries=result is not None,
+                                   narrow=kfr.narrowed)
             run.stage = "path"
         if start.solved:
             found = _relocated(run, warm, grips, start, path_through(run, start))
@@ -79,7 +80,7 @@ def _relocated(run: Run, warm, grips, kfr, found: TrajectoryResult) -> Trajector
             if out.status != "solved" or not relocate.still_clear(run, obstruction, placements):
                 continue
             run.stage, run.anchors = "keyframes", move.anchors
-            again = keyframes_with(run, warm, grips, placements)
+            again = keyframes_with(run, warm, grips, placements, narrow=kfr.narrowed)
             run.stage, run.anchors = "path", None
             if again.solved:
                 kfr, found = again, path_through(run, again)
@@ -91,10 +92,10 @@ def _relocated(run: Run, warm, grips, kfr, found: TrajectoryResult) -> Trajector
 
 
 def path_through(run: Run, kfr) -> TrajectoryResult:
-    """The path stage through the keyframes of `kfr` (solved), the hand opened as its
-    grips need (hand.with_hand)."""
+    """The path stage through the keyframes of `kfr` (solved), the hand as they were
+    solved with: open, or narrowed to their grips (hand.with_hand)."""
     base = run.problem
-    run.problem = with_hand(base, kfr.choices)
+    run.problem = with_hand(base, kfr.choices) if kfr.narrowed else base
     run.checker = run.problem.checker
     try:
         return _path_through(run, kfr)

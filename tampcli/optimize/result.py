@@ -62,6 +62,9 @@ class TrajectoryResult:
     # Warm starts for a later stage or a longer skeleton:
     keyframes: Keyframes = field(default_factory=Keyframes, repr=False)
     choices: dict = field(default_factory=dict, repr=False)  # step -> values.GripChoice
+    # The keyframes were solved with the hand narrowed to these choices (hand.with_hand),
+    # the open hand having failed; the path stage then keeps it so.
+    narrowed: bool = False
     placements: dict = field(default_factory=dict, repr=False)  # step -> values.Placement
     grasps: dict = field(default_factory=dict, repr=False)  # object -> 4x4 in tool frame
 

@@ -34,6 +34,8 @@ class Run:
 
     def result(self, status: str, **fields) -> TrajectoryResult:
         fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")
+        hand = self.problem.hand
+        fields.setdefault("narrowed", hand is not None and hand.values is not None)
         return TrajectoryResult(status=status, stage=self.stage, names=self.problem.names,
                                 iterations=self.iterations, nlp_solves=self.nlp_solves,
                                 seconds=time.perf_counter() - self.t0, **fields)

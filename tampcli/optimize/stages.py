@@ -20,7 +20,6 @@ from tampcli.optimize import stability as S
 from tampcli.optimize.collide import body_matrices, contact_rows, held_of, held_spec, row_keys
 from tampcli.optimize.expr import PoseX, RowSet, constant_pose, held_posex, planar_pose
 from tampcli.optimize.grips import held_pose
-from tampcli.optimize.hand import hand_checker
 from tampcli.optimize.layout import Layout, grip_block, keyframe_block, placement_block
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.world_state import grip_of, reach_of, vertical_overlap
@@ -254,7 +253,6 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
         step.kind.keyframe_rows(walk, step)
     rows, pending = walk.rows, walk.pending
     if pending:
-        checker = hand_checker(problem, checker, choices)
         contacts = checker.distances_many(
             np.array([q_of(k) for k, *_ in pending]),
             [body_matrices(moved) for *_, moved in pending],

@@ -1,4 +1,5 @@
-"""The hand opened only as wide as the skeleton's grips need (optimize/hand.py).
+"""The hand opened only as wide as the skeleton's grips need (optimize/hand.py),
+where the open hand fails.
 
 blind10 p05 (written blind): bar-2, 2.4 cm across, stands with its long side
 6 cm from a bin's rim. The Panda's fingers fully open reach 5.7 cm from the
@@ -9,6 +10,7 @@ end). Opened to the bar's width and 6 mm a side, the fingers stand clear.
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import numpy as np
@@ -81,6 +83,7 @@ def test_a_checker_with_fingers_answers_as_rows_that_give_them(bar):
 
 def test_the_bar_beside_the_rim_is_picked_with_the_hand_narrowed(bar, solved):
     assert solved.solved, solved.worst_constraint
+    assert solved.narrowed  # the open hand failed first
     narrowed = with_hand(bar, solved.choices)
     assert narrowed.hand.opening < bar.world.gripper_opening - 0.01
     q = np.asarray(solved.keyframes.q[0])
@@ -155,10 +158,27 @@ def test_an_object_straddled_by_mm_keeps_half_that_on_the_way_down():
         d = narrowed.checker.min_distance(ctx.q_b, ctx.moved, None, frozenset(), static=False)
         assert 2 * opts.tight_margin < d < opts.margin  # straddled with millimetres
         own = motion_margins(narrowed.checker, m, ctx.q_a, ctx.q_b, None, ctx.moved,
-                             opts.margin, opts.tight_margin)
+                             opts.margin, opts.tight_margin, straddle=True)
         assert own.near["a"] == pytest.approx(d / 2, abs=1e-6)
-        path = solve(problem, "path", warm=kfr)
+        # The open hand keeps the margin until the last segment, as it always did.
+        assert "a" not in motion_margins(narrowed.checker, m, ctx.q_a, ctx.q_b, None,
+                                         ctx.moved, opts.margin, opts.tight_margin).near
+        path = solve(problem, "path", warm=dataclasses.replace(kfr, narrowed=True))
+        assert path.narrowed
         assert path.solved
         # No detour: within 1 % of the straight line's |dq|^2 / T, the least there is.
         dq = np.asarray(ctx.q_b) - np.asarray(ctx.q_a)
         assert path.phase_costs[0] == pytest.approx(float(dq @ dq) / opts.waypoints, rel=0.01)
+
+
+def test_a_plan_the_open_hand_solves_keeps_it_open():
+    """arm-pick-place p01: nothing near the cube but the table; the open hand solves
+    it, so the solution's fingers are left out (open unless closed on the cube)."""
+    folder = FOLDER.parents[1] / "arm-pick-place"
+    domain = FOLDER.parents[2] / "domains" / "arm-pick-place"
+    with lowered_library(folder, domain, "p01", ops("(pick a start)", "(place a goal)")
+                         ) as problem:
+        path = solve(problem, "path")
+        assert path.solved and not path.narrowed
+        assert hand_of(problem, path.choices) != problem.hand  # narrowing was possible
+        assert path.fingers is None
