@@ -11,8 +11,10 @@ starts inside its neighbour. So a skeleton's hand opens to the widest
 closing width among its grasps, as the keyframe guess chose their faces
 (grasp_families.closing_width of each choice), plus CLEARANCE on either
 side, measured on the arm's own finger shapes (World.gripper_at). The
-keyframe NLP and the path stage take the hand so; the guess, choosing,
-takes it open (a grip it scores as clashing there is only tried later).
+keyframe NLP and the path stage take the hand so where they fail with it
+fully open (keyframe_stage.keyframes: open first, which found the better local
+optima on the library's problems); the guess, choosing, takes it open (a grip
+it scores as clashing there is only tried later).
 """
 
 from __future__ import annotations
