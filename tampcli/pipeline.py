@@ -353,10 +353,12 @@ def _solution(inputs: ParsedInputs, world: World, options: SolveOptions, result:
     trajectory = [[float(v) for v in q] for q in best.trajectory]
     if best.fingers is not None:
         # The hand held narrower than open (optimize/hand.py): its finger joints as
-        # columns after the arm's, as the format allows (solution_read.FINGER_JOINTS).
+        # columns after the arm's, as the format allows (solution_read.FINGERS_OF); the
+        # joints that mimic them follow on reading (solution_fit.finger_rows).
+        k = len(world.finger_names)
         common["robot"] = {**robot, "joints": [*robot["joints"], *world.finger_names]}
-        trajectory = [q + [float(v) for v in f] for q, f in zip(trajectory, best.fingers,
-                                                                 strict=True)]
+        trajectory = [q + [float(v) for v in f[:k]]
+                      for q, f in zip(trajectory, best.fingers, strict=True)]
     return Solution(
         status="solved", reason=None, plan=tuple(op.name for op in result.best_plan),
         symbolic_cost=result.best_symbolic_cost, cost=float(best.cost),

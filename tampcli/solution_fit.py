@@ -4,6 +4,8 @@ tool link) and poses for exactly the scene's movable bodies. `render` and
 
 from __future__ import annotations
 
+import numpy as np
+
 from tampcli.errors import SolutionFileError
 from tampcli.solution_read import SolutionFile
 
@@ -57,3 +59,12 @@ def check_fits_world(solution: SolutionFile, world, scene_path) -> None:
         if phase.attached is not None and phase.attached not in sol.objects:
             raise SolutionFileError(f"attached object {phase.attached!r} has no poses in "
                                     "`objects`", path, key=f"phases[{i}].attached")
+
+
+def finger_rows(solution: SolutionFile, world):
+    """(N, k) each finger joint's value at each waypoint (World.finger_links' order:
+    the joints that mimic the file's follow them), from the file's finger columns;
+    None when it gives none."""
+    if solution.fingers is None:
+        return None
+    return np.array([world.finger_values(row) for row in solution.fingers], dtype=float)

@@ -16,13 +16,17 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from tampcli.errors import SolutionFileError
+from tampcli.geometry.arms import ARMS
 from tampcli.solution import STATUSES, VERSION, Phase, SkeletonRecord, Solution
 from tampcli.solution_kkt import stages_from_dict
 
-# Duplicated from geometry.world (which imports PyBullet) so reading a file needs
-# no simulator; tests/test_solution_reader.py checks the two agree.
-FINGER_JOINTS = ("panda_finger_joint1", "panda_finger_joint2")
-FINGERED_MODELS = ("panda",)
+# The finger joints a solution file may give as columns, per built-in robot model
+# (geometry.arms: no simulator needed to read a file). A URDF arm's fingers are the
+# scene's to name, which a file alone does not know: its solutions give none.
+FINGERS_OF = {model: arm.fingers.joints for model, arm in ARMS.items() if arm.fingers}
+FINGERED_MODELS = tuple(FINGERS_OF)
+
+_ROBOT_NAMES = {"panda": "Panda", "kuka_iiwa": "KUKA iiwa", "xarm6": "xArm6"}
 
 _REQUIRED = ("version", "domain", "problem", "scene", "status", "reason", "plan",
              "symbolic_cost", "cost", "lower_bound", "robot", "trajectory", "phases",
@@ -37,15 +41,17 @@ class SolutionFile:
     consecutive motion phases (their waypoint spans joined: phases share their
     boundary waypoint, so the trajectory and its indices are unchanged);
     `boundaries[k]` is the index into `raw`'s pose lists of canonical boundary
-    k. `fingers` holds the opening of each finger at each waypoint when the
-    file gives finger columns, else None (open, closed on a grasped object).
+    k. `fingers` holds, at each waypoint, the value of each finger joint of the
+    model (FINGERS_OF's order) when the file gives finger columns, else None
+    (open, closed on a grasped object); joints that mimic them are the World's
+    to add (solution_fit.finger_rows).
     """
 
     path: str
     raw: Solution
     canonical: Solution
     boundaries: tuple[int, ...]
-    fingers: tuple[tuple[float, float], ...] | None = None
+    fingers: tuple[tuple[float, ...], ...] | None = None
 
     @property
     def retreat(self) -> Phase | None:
@@ -193,11 +199,15 @@ def _check_trajectory(sol: Solution, joints, path: str) -> None:
         if name in seen:
             raise SolutionFileError(f"joint {name!r} named twice", path, key="robot.joints")
         seen.add(name)
-    fingers = [name for name in joints if name in FINGER_JOINTS]
     model = sol.robot.get("model")
-    if fingers and model not in FINGERED_MODELS:
-        raise SolutionFileError(f"{fingers[0]!r} is a finger joint of the Panda, but the robot "
-                                f"is {model!r}", path, key="robot.joints")
+    own = FINGERS_OF.get(model, ())
+    for name in joints:
+        other = next((m for m, names in FINGERS_OF.items() if name in names and m != model),
+                     None)
+        if other is not None and name not in own:
+            raise SolutionFileError(f"{name!r} is a finger joint of the {_ROBOT_NAMES[other]}, "
+                                    f"but the robot is {model!r}", path, key="robot.joints")
+    fingers = [name for name in joints if name in own]
     if fingers and len(fingers) == len(joints):
         raise SolutionFileError("only finger joints: the arm's joints are missing", path,
                                 key="robot.joints")
@@ -290,8 +300,9 @@ def _check_objects(sol: Solution, path: str) -> None:
 
 
 def _canonical(sol: Solution, path: str, joints: tuple[str, ...]) -> SolutionFile:
-    arm = [j for j, name in enumerate(joints) if name not in FINGER_JOINTS]
-    finger_columns = [joints.index(name) for name in FINGER_JOINTS if name in joints]
+    own = FINGERS_OF.get(sol.robot.get("model"), ())
+    arm = [j for j, name in enumerate(joints) if name not in own]
+    finger_columns = [joints.index(name) if name in joints else None for name in own]
     phases: list[Phase] = []
     boundaries = [0]
     for i, phase in enumerate(sol.phases):
@@ -302,11 +313,12 @@ def _canonical(sol: Solution, path: str, joints: tuple[str, ...]) -> SolutionFil
             phases.append(phase)
             boundaries.append(i + 1)
     fingers = None
-    if finger_columns:
-        # One finger column given: the Panda's fingers move together (the second
-        # mimics the first on the real hand), so it stands for both.
-        first, second = finger_columns[0], finger_columns[-1]
-        fingers = tuple((float(q[first]), float(q[second])) for q in sol.trajectory)
+    given = [c for c in finger_columns if c is not None]
+    if given:
+        # A finger column left out takes the first given one's value: the Panda's
+        # two fingers move together (the second mimics the first on the real hand).
+        columns = [given[0] if c is None else c for c in finger_columns]
+        fingers = tuple(tuple(float(q[c]) for c in columns) for q in sol.trajectory)
     if len(arm) == len(joints):
         trajectory, robot = sol.trajectory, sol.robot
     else:

@@ -9,7 +9,9 @@ import pytest
 from tampcli import solution
 from tampcli.errors import SolutionFileError
 from tampcli.solution import Phase, Solution
-from tampcli.solution_read import FINGER_JOINTS, check_solution, read_solution
+from tampcli.solution_read import FINGERS_OF, check_solution, read_solution
+
+FINGER_JOINTS = FINGERS_OF["panda"]
 
 A0 = [0.3, 0.0, 0.025, 0.0, 0.0, 0.0, 1.0]  # cube a on the table
 A1 = [0.3, 0.1, 0.025, 0.0, 0.0, 0.0, 1.0]  # ... carried part way
@@ -157,6 +159,23 @@ def test_the_finger_names_are_the_worlds():
     from tampcli.geometry.world import PANDA_FINGERS
 
     assert FINGER_JOINTS == PANDA_FINGERS
+    assert FINGERS_OF["kuka_iiwa"] == ("gripper_left_joint",)
+    assert FINGERS_OF["xarm6"] == ("drive_joint",)
+
+
+def test_another_arms_finger_column(tmp_path):
+    """The xArm6's one named finger joint (five more mimic it: the World adds them)."""
+    data = copy.deepcopy(SOLVE_SHAPE)
+    arm = [f"joint{i}" for i in range(1, 7)]
+    data["robot"] = {"model": "xarm6", "joints": [*arm, "drive_joint"],
+                     "tool_link": "xarm_gripper_base_link"}
+    data["trajectory"] = [[0.1 * k for k in range(6)] + [0.2 + 0.1 * i] for i in range(5)]
+    checked = read(tmp_path, data)
+    assert checked.fingers == tuple((0.2 + 0.1 * i,) for i in range(5))
+    assert checked.canonical.robot["joints"] == arm
+    data["robot"]["joints"][-1] = "panda_finger_joint1"
+    fails(tmp_path, data, "robot.joints", "'panda_finger_joint1' is a finger joint of the Panda",
+          "'xarm6'")
 
 
 def test_an_in_memory_solution_gets_the_same_checks():

@@ -30,8 +30,8 @@ import numpy as np
 
 from tampcli import solution as solution_file
 from tampcli.errors import SolutionFileError
-from tampcli.solution_fit import check_fits_world
-from tampcli.solution_read import FINGER_JOINTS, SolutionFile
+from tampcli.solution_fit import check_fits_world, finger_rows
+from tampcli.solution_read import SolutionFile
 
 RESTING = 1e-6  # m + rad: an object not held must not move at all (as the verifier says)
 
@@ -81,7 +81,7 @@ def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path
         if spans and spans[-1].action is None:
             problem = _with_retreat(problem, spans[-1], checked, world)
         result, stationary = _result(checked, spans)
-        fingers = _fingers(checked, stationary)
+        fingers = _fingers(checked, world, stationary)
         found = [_to_file_waypoints(m, stationary)
                  for m in verify.verify(problem, result, fingers=fingers)]
         found += _inside_merged(checked, spans, world)
@@ -162,12 +162,14 @@ def _result(checked: SolutionFile, spans: list[_Span]):
                             object_poses=poses), stationary
 
 
-def _fingers(checked: SolutionFile, stationary: list[int]):
-    """The file's finger columns (None: none given) on `_result`'s waypoints: a
-    stationary motion's copied waypoint keeps its fingers."""
-    if checked.fingers is None:
+def _fingers(checked: SolutionFile, world, stationary: list[int]):
+    """The file's finger columns (None: none given) on `_result`'s waypoints, every
+    finger joint's value (solution_fit.finger_rows): a stationary motion's copied
+    waypoint keeps its fingers."""
+    found = finger_rows(checked, world)
+    if found is None:
         return None
-    rows = list(checked.fingers)
+    rows = list(found)
     for at in stationary:  # ascending, each already shifted by the copies before it
         rows.insert(at, rows[at])
     return np.array(rows, dtype=float)
@@ -261,16 +263,17 @@ def _distance(a, b) -> float:
 
 
 def _finger_travel(checked: SolutionFile, world) -> list[str]:
-    """Finger openings within the fingers' travel, 0 (closed) to fully open."""
-    from tampcli.geometry.world import PANDA_FINGER_OPEN
+    """Finger joint values within their travel, open to closed (World.finger_range)."""
     from tampcli.optimize.verify import LIMIT
 
     if checked.fingers is None:
         return []
     values = np.asarray(checked.fingers, dtype=float)
-    bad = np.argwhere((values < -LIMIT) | (values > PANDA_FINGER_OPEN + LIMIT))
+    travel = np.array([sorted(r) for r in world.finger_range], dtype=float)
+    bad = np.argwhere((values < travel[:, 0] - LIMIT) | (values > travel[:, 1] + LIMIT))
     if not len(bad):
         return []
     i, j = (int(v) for v in bad[0])
-    return [f"waypoint {i}: finger joint {FINGER_JOINTS[j]} = {values[i, j]:.4f} outside "
-            f"[0, {PANDA_FINGER_OPEN}]"]
+    lo, hi = travel[j]
+    return [f"waypoint {i}: finger joint {world.finger_names[j]} = {values[i, j]:.4f} outside "
+            f"[{lo:g}, {hi:g}]"]

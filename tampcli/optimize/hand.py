@@ -81,9 +81,9 @@ def hand_for(world, width: float | None, clearance: float = CLEARANCE) -> Hand:
 
 def hand_of(problem, choices: dict) -> Hand:
     """The hand for a skeleton whose grasps grip as `choices` say: open for the
-    planar robot, for an arm whose finger joints a solution file cannot give
-    (solution_read: there the fingers are open unless closed on what they hold)
-    and for a skeleton with a push."""
+    planar robot, for an arm whose finger joints a solution file cannot give (a
+    URDF arm, solution_read.FINGERS_OF: there the fingers are open unless closed
+    on what they hold) and for a skeleton with a push."""
     world = problem.world
     if problem.planar or world.gripper_opening is None \
             or world.scene.robot.model not in FINGERED_MODELS \
@@ -118,24 +118,22 @@ def with_hand(problem, choices: dict):
 
 
 def finger_columns(problem, events, choices: dict, n: int) -> np.ndarray | None:
-    """(n, k) the solution's finger columns (World.finger_names) at each of its n
-    waypoints: the hand's opening, closed on a grasped object (touching it: its
+    """(n, k) every finger joint's value (World.finger_links' order: the solution's
+    finger columns, World.finger_names, come first) at each of its n waypoints: the hand's opening, closed on a grasped object (touching it: its
     closing width) from its grasp's waypoint to its place's. `events`: (waypoint
     where a step ends, step) in order (assemble.assemble). None with the hand open
     as loaded: the file then leaves the fingers out, which means the same."""
     hand = problem.hand
     if hand is None or hand.values is None:
         return None
-    world = problem.world
-    k = len(world.finger_names)
-    opened = np.asarray(hand.values[:k], dtype=float)
+    opened = np.asarray(hand.values, dtype=float)
     out = np.tile(opened, (n, 1))
     for at, step in events:
         if step.kind.fingers is True:
             choice = choices.get(step.index)
             psi = choice.psi if choice is not None and choice.psi is not None else 0.0
             width = F.closing_width(problem.bodies[step.obj], psi)
-            out[at:] = _cached(problem, width, 0.0).values[:k]
+            out[at:] = _cached(problem, width, 0.0).values
         elif step.kind.fingers is False:
             out[at + 1:] = opened
     return out

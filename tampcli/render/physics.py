@@ -39,6 +39,7 @@ from tampcli.render.physics_values import (
     object_mass,
 )
 from tampcli.render.replay import Replay, phase_label
+from tampcli.solution_fit import finger_rows
 
 
 def replay_physics(inputs, mode_kind=None, speed: float | None = None,
@@ -55,7 +56,7 @@ def replay_physics(inputs, mode_kind=None, speed: float | None = None,
     with World(inputs.scene) as world:
         replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind, speed=speed,
                         pause=settings.pause,
-                        fingers=inputs.file.fingers if inputs.file is not None else None)
+                        fingers=None if inputs.file is None else finger_rows(inputs.file, world))
         run = _Run(world, replay, inputs, settings, mode_kind or (lambda action: None))
         run.play()
         return run.report()

@@ -24,6 +24,7 @@ from tampcli.render.progress import progress
 from tampcli.render.replay import Replay
 from tampcli.render.scenery import add_regions, visible_points
 from tampcli.solution import Solution
+from tampcli.solution_fit import finger_rows
 
 
 def render_solution(source: RenderInputs | Solution | str | Path,
@@ -94,7 +95,7 @@ def _plan(inputs, world, options: RenderOptions):
     check_against_world(inputs, world)
     replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind_of(inputs.modes),
                     duration=options.duration, speed=options.speed, pause=options.pause,
-                    fingers=inputs.file.fingers if inputs.file is not None else None)
+                    fingers=None if inputs.file is None else finger_rows(inputs.file, world))
     points = None
     if inputs.scene.camera is None:
         points = visible_points(world, replay.states(min(options.fps, 4.0)))

@@ -24,10 +24,22 @@ class FingerJoints:
     open: tuple[float, ...]  # per joint of `pb`
     closed: tuple[float, ...]
     links: tuple[int, ...]  # links the fingers move
+    leaders: tuple[int, ...]  # per joint of `pb`, the index in `names` of its leader
 
     def at(self, t: float) -> tuple[float, ...]:
         """Joint values a fraction t of the way from open (0) to closed (1)."""
         return tuple(o + t * (c - o) for o, c in zip(self.open, self.closed, strict=True))
+
+    def expand(self, named) -> tuple[float, ...]:
+        """Every joint's value (`pb`'s order) from the named joints' values: a joint
+        that mimics one goes the same fraction of its travel."""
+        named = [float(v) for v in named]
+        if len(named) != len(self.names):
+            raise ValueError(f"{len(named)} finger values for the joints {self.names}")
+        t = [(v - self.open[i]) / (self.closed[i] - self.open[i]) for i, v in enumerate(named)]
+        return tuple(named[i] if j == i else o + t[i] * (c - o)
+                     for j, (o, c, i) in enumerate(zip(self.open, self.closed, self.leaders,
+                                                       strict=True)))
 
 
 @dataclass(frozen=True)
@@ -105,8 +117,10 @@ def _finger_joints(pb, client, uid, arm: Arm, followers, by_name) -> FingerJoint
     spec = arm.fingers
     pb_joints = [by_name[n] for n in spec.joints]
     open_, closed = list(spec.open), list(spec.closed)
+    leaders = list(range(len(spec.joints)))
     for name, (leader, mult, off) in followers.items():
         i = spec.joints.index(leader)
+        leaders.append(i)
         pb_joints.append(by_name[name])
         open_.append(mult * spec.open[i] + off)
         closed.append(mult * spec.closed[i] + off)
@@ -121,7 +135,7 @@ def _finger_joints(pb, client, uid, arm: Arm, followers, by_name) -> FingerJoint
                 moved.add(j)
                 changed = True
     return FingerJoints(spec.joints, tuple(pb_joints), tuple(open_), tuple(closed),
-                        tuple(sorted(moved)))
+                        tuple(sorted(moved)), tuple(leaders))
 
 
 def closing_fraction(pb, client: int, robot: int, fingers: FingerJoints, bodies,

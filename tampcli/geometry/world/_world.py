@@ -187,6 +187,14 @@ class World:
         k = len(self._fingers.names)
         return tuple(zip(self._fingers.open[:k], self._fingers.closed[:k], strict=True))
 
+    def finger_values(self, named) -> tuple[float, ...]:
+        """Each finger joint's value in `finger_links`' order, from those of
+        `finger_names` (a solution file's finger columns): the joints that mimic one
+        go the same fraction of their travel."""
+        if self._fingers is None:
+            raise ValueError("the robot has no fingers")
+        return self._fingers.expand(named)
+
     @property
     def finger_links(self) -> tuple[int, ...]:
         """Chain index of the link each finger joint moves, in the order of
