@@ -1,0 +1,6 @@
+(define (problem p01)
+  (:domain kuka-trough)
+  (:objects bar trough dock)
+  (:init (item bar) (spot trough) (spot dock)
+         (at bar trough) (free-hand))
+  (:goal (at bar dock)))

@@ -1,0 +1,6 @@
+(define (problem p04)
+  (:domain xarm-tray)
+  (:objects blue orange mat inside tray)
+  (:init (block blue) (block orange) (zone mat) (zone inside)
+         (in blue mat) (in orange mat))
+  (:goal (and (in blue inside) (in orange inside))))

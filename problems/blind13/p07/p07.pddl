@@ -1,0 +1,6 @@
+(define (problem p07)
+  (:domain panda-shelf)
+  (:objects bottle counter shelf-spot)
+  (:init (thing bottle) (surface counter) (surface shelf-spot)
+         (on-surface bottle counter) (gripper-empty))
+  (:goal (on-surface bottle shelf-spot)))
