@@ -101,6 +101,12 @@ BLIND11 = {"p01": ("thin slab by a wall", 2), "p02": ("into a packed row", 2),
 BLIND12 = {"p01": ("thin slab by a wall", 2), "p02": ("bar by a bin wall (KUKA)", 2),
            "p03": ("carton into a packed row", 2), "p04": ("spool between taller ones", 2),
            "p05": ("key out of a slot", 2), "p06": ("wide and thin in one plan", 4)}
+BLIND13 = {"p01": ("bar between low walls (KUKA)", 2), "p02": ("three cubes into a bin (KUKA)", 6),
+           "p03": ("can by a tall wall into a slot (xArm6)", 2),
+           "p04": ("two cubes into a rimmed tray (xArm6)", 4),
+           "p05": ("three cubes into a narrow well", 6), "p06": ("box on a drum, box on box (KUKA)", 4),
+           "p07": ("side grasp under a shelf board", 2),
+           "p08": ("a stone the PDDL does not know (xArm6)", 4)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -117,18 +123,12 @@ def problems() -> list[tuple[str, str, str, int]]:
     """(folder, stem, class, expected actions) of every robustness problem."""
     rows = [("robust-arm", stem, cls, ARM_ACTIONS[stem]) for stem, cls in sorted(ARM_CLASSES.items())]
     rows += [(c.folder, c.stem, PLANAR_CLASSES[c.kind], c.actions) for c in PLANAR_CASES]
-    rows += [("blind2", stem, cls, n) for stem, (cls, n) in sorted(BLIND2.items())]
-    rows += [("blind3", stem, cls, n) for stem, (cls, n) in sorted(BLIND3.items())]
-    rows += [("blind4", stem, cls, n) for stem, (cls, n) in sorted(BLIND4.items())]
-    rows += [("blind5", stem, cls, n) for stem, (cls, n) in sorted(BLIND5.items())]
-    rows += [("blind6", stem, cls, n) for stem, (cls, n) in sorted(BLIND6.items())]
-    rows += [("blind7", stem, cls, n) for stem, (cls, n) in sorted(BLIND7.items())]
-    rows += [("blind8", stem, cls, n) for stem, (cls, n) in sorted(BLIND8.items())]
-    rows += [("blind9", stem, cls, n) for stem, (cls, n) in sorted(BLIND9.items())]
-    rows += [("blind10", stem, cls, n) for stem, (cls, n) in sorted(BLIND10.items())]
-    rows += [("blind11", stem, cls, n) for stem, (cls, n) in sorted(BLIND11.items())]
-    rows += [("blind12", stem, cls, n) for stem, (cls, n) in sorted(BLIND12.items())]
-    rows += [("gen1", stem, cls, n) for stem, (cls, n) in sorted(GEN1.items())]
+    sets = (("blind2", BLIND2), ("blind3", BLIND3), ("blind4", BLIND4), ("blind5", BLIND5),
+            ("blind6", BLIND6), ("blind7", BLIND7), ("blind8", BLIND8), ("blind9", BLIND9),
+            ("blind10", BLIND10), ("blind11", BLIND11), ("blind12", BLIND12),
+            ("blind13", BLIND13), ("gen1", GEN1))
+    rows += [(folder, stem, cls, n) for folder, table in sets
+             for stem, (cls, n) in sorted(table.items())]
     return rows
 
 
