@@ -258,3 +258,31 @@ def test_face_grips_put_the_rim_at_the_middle_of_each_face(planar):
         assert quarter == pytest.approx(round(quarter), abs=1e-9)
         assert abs(f - t) <= np.pi + 1e-9
     assert [abs(f - t) for f in tries] == sorted(abs(f - t) for f in tries)
+
+
+def test_a_face_the_disk_cannot_reach_costs_no_collision_nlp(monkeypatch):
+    """planar-tamp p01: the path stage tries the face nearest the keyframe NLP's own
+    contact angle first. Where that face cannot be reached even without collisions,
+    its relaxation says so and the keyframe NLP with collisions is not paid for (it
+    took 26 iterations, 0.37 s, to fail); the NLP's own angle then solves the path."""
+    from tampcli.optimize import path_stage
+
+    from .helpers import lowered_library
+
+    calls = []
+    keyframes_with = path_stage.keyframes_with
+
+    def recorded(run, warm, grips=None, *args, **kwargs):
+        out = keyframes_with(run, warm, grips, *args, **kwargs)
+        calls.append((grips is not None, kwargs.get("collisions", True), out.solved))
+        return out
+
+    monkeypatch.setattr(path_stage, "keyframes_with", recorded)
+    folder = ROOT / "problems" / "planar-tamp"
+    skeleton = ops("(pick a ground)", "(place a goal)", "(pick b ground)", "(place b goal)")
+    with lowered_library(folder, ROOT / "domains" / "planar-tamp", "p01", skeleton) as problem:
+        kf = solve(problem, "keyframes")
+        path = solve(problem, "path", kf)
+    assert path.solved, path.worst_constraint
+    # The face's relaxation failed, and nothing else was tried at that face.
+    assert calls == [(True, False, False)]
