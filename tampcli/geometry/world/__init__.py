@@ -10,6 +10,6 @@ the World's own parts and are used by it alone:
     _dynamics.py  Dynamics: gravity, joint motors and a grasp (the physics replay)
 """
 
-from tampcli.geometry.world._world import PANDA_FINGER_OPEN, PANDA_FINGERS, World
+from tampcli.geometry.world._world import PANDA_FINGERS, World
 
-__all__ = ["PANDA_FINGER_OPEN", "PANDA_FINGERS", "World"]
+__all__ = ["PANDA_FINGERS", "World"]

@@ -27,7 +27,6 @@ from tampcli.geometry.world._load import load_body, make_planar
 from tampcli.geometry.world._pybullet import pybullet
 
 PANDA_FINGERS = PANDA.fingers.joints
-PANDA_FINGER_OPEN = PANDA.fingers.open[0]
 PLANAR_LINKS = ("planar_x", "planar_body")
 
 
@@ -188,11 +187,8 @@ class World:
         return tuple(zip(self._fingers.open[:k], self._fingers.closed[:k], strict=True))
 
     def finger_values(self, named) -> tuple[float, ...]:
-        """Each finger joint's value in `finger_links`' order, from those of
-        `finger_names` (a solution file's finger columns): the joints that mimic one
-        go the same fraction of their travel."""
-        if self._fingers is None:
-            raise ValueError("the robot has no fingers")
+        """Every finger joint's value (`finger_links`' order) from `finger_names`' (a
+        file's columns): a joint that mimics one goes the same fraction of its travel."""
         return self._fingers.expand(named)
 
     @property
