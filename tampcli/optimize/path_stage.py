@@ -46,20 +46,31 @@ def path(run: Run, warm) -> TrajectoryResult:
     # A suction grip off a face's middle first gets that face (a carry in line with
     # the disk), then the NLP's own angle, then the other faces.
     faces = list(face_grips(problem, kfr))
-    result = None
+    result = last = None
     for grips in faces[:1] + [None] + faces[1:]:
         if result is not None and (result.solved or result.status == "bounded"
                                    or time.perf_counter() > run.deadline):
             break
+        if grips is not None and _before_the_grips(last, grips):
+            continue
         start = kfr
         if grips is not None:
             run.stage = "keyframes"
             start = _face_keyframes(run, warm, grips, first=result is None, narrow=kfr.narrowed)
             run.stage = "path"
         if start.solved:
-            found = _relocated(run, warm, grips, start, path_through(run, start))
-            result = found if result is None or found.solved else result
+            last = _relocated(run, warm, grips, start, path_through(run, start))
+            result = last if result is None or last.solved else result
     return result
+
+
+def _before_the_grips(failed, grips) -> bool:
+    """Whether the last path failed on a motion into a step before every grasp whose
+    grip `grips` would change: another face there leaves that motion's ends where
+    they were (gen1 planar-s02: whole paths solved again per face, about 45 s)."""
+    if failed is None or failed.failed_actions is None:
+        return False
+    return failed.failed_actions - 1 < min(grips)
 
 
 def _face_keyframes(run: Run, warm, grips, first: bool, narrow: bool):

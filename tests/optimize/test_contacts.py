@@ -286,3 +286,19 @@ def test_a_face_the_disk_cannot_reach_costs_no_collision_nlp(monkeypatch):
     assert path.solved, path.worst_constraint
     # The face's relaxation failed, and nothing else was tried at that face.
     assert calls == [(True, False, False)]
+
+
+def test_other_faces_are_not_tried_for_a_failure_before_their_grasps():
+    """path_stage: a path that failed on the motion into step 1 is not solved again
+    with other faces for grasps at steps 2 and 4 (their grips leave that motion's
+    ends where they were); one that failed on the motion into step 2 is."""
+    from tampcli.optimize.path_stage import _before_the_grips
+    from tampcli.optimize.result import TrajectoryResult
+
+    def failed(actions):
+        return TrajectoryResult("infeasible", "path", ("a",) * 5, failed_actions=actions)
+
+    assert _before_the_grips(failed(2), {2: 0.0, 4: 1.5})  # the motion into step 1
+    assert not _before_the_grips(failed(3), {2: 0.0, 4: 1.5})  # the approach to grasp 2
+    assert not _before_the_grips(failed(None), {2: 0.0})
+    assert not _before_the_grips(None, {2: 0.0})
