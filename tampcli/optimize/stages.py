@@ -218,7 +218,8 @@ class KeyframeWalk:
     def collide(self, k, step, held, frame, ignore) -> None:
         if self.collisions:
             moved = {n: P for n, P in self.state.items() if P.jac}
-            self.pending.append((k, step.name, held, frame, frozenset(ignore), moved))
+            self.pending.append((k, step.name, held, frame, frozenset(ignore), moved,
+                                 bool(step.kind.places)))
 
     def placement_rows(self, step, P: PoseX) -> None:
         """The step's object rests at P from here on (it joins `state`), a box of a tower
@@ -255,12 +256,26 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
     if pending:
         contacts = checker.distances_many(
             np.array([q_of(k) for k, *_ in pending]),
-            [body_matrices(moved) for *_, moved in pending],
-            [held_spec(h) for _, _, h, _, _, _ in pending],
-            [ignore for *_, ignore, _ in pending], opts.activation)
-        for (k, name, h, frame, ignore, moved), found in zip(pending, contacts, strict=True):
-            contact_rows(rows.ineq, name, found, [(keyframe_block(k), 1.0)], frame, h, moved,
-                         row_keys(bodies, ignore, h), opts.activation, opts.margin)
+            [body_matrices(p[5]) for p in pending],
+            [held_spec(p[2]) for p in pending],
+            [p[4] for p in pending], opts.activation)
+        for (k, name, h, frame, ignore, moved, placing), found in zip(pending, contacts,
+                                                                      strict=True):
+            keys, at = row_keys(bodies, ignore, h), [(keyframe_block(k), 1.0)]
+            if placing and h is not None:
+                # What is set down keeps the placement rows' gap (`apart`: 1 mm) from its
+                # neighbours, not the margin the robot keeps: the final stage packs
+                # them so (arm-sort: cubes 1 mm apart in a bin, a keyframe NLP held to
+                # 1 cm between them failed until its tight retry).
+                own = f"held:{h.name}"
+                contact_rows(rows.ineq, name, [c for c in found if c.a != own], at, frame,
+                             h, moved, keys, opts.activation, opts.margin)
+                contact_rows(rows.ineq, name, [c for c in found if c.a == own], at, frame,
+                             h, moved, keys, opts.activation, min(opts.margin, opts.tight_margin),
+                             {"self": opts.margin})
+            else:
+                contact_rows(rows.ineq, name, found, at, frame, h, moved, keys,
+                             opts.activation, opts.margin)
     # Cost: sum over motions of |dq|^2 / T, the least path cost through these keyframes.
     T = opts.waypoints
     prev, prev_block = np.asarray(start, dtype=float), None
