@@ -302,3 +302,32 @@ def test_other_faces_are_not_tried_for_a_failure_before_their_grasps():
     assert not _before_the_grips(failed(3), {2: 0.0, 4: 1.5})  # the approach to grasp 2
     assert not _before_the_grips(failed(None), {2: 0.0})
     assert not _before_the_grips(None, {2: 0.0})
+
+
+def test_what_a_place_sets_down_keeps_the_placement_gap_not_the_robots_margin():
+    """arm-sort p01, two cubes into the blue bin: at the second place keyframe the
+    held cube keeps the placement rows' 1 mm from the first (the final stage packs
+    them so), while the fingers beside it keep the robot's 1 cm."""
+    import numpy as np
+
+    from tampcli.optimize.grips import Kinematics
+    from tampcli.optimize.stages import keyframe_rows
+
+    from .helpers import lowered_library
+
+    skeleton = ops("(pick blue1 workspace)", "(place blue1 blue-bin)",
+                   "(pick blue2 workspace)", "(place blue2 blue-bin)")
+    with lowered_library(ROOT / "problems" / "arm-sort", ROOT / "domains" / "arm-sort", "p01",
+                         skeleton) as problem:
+        kf = solve(problem, "keyframes")
+        assert kf.solved, kf.worst_constraint
+        rows = keyframe_rows(problem, kf.keyframes.blocks(), kf.choices,
+                             Kinematics(problem.world), problem.checker,
+                             np.asarray(problem.world.start))
+    values = dict(zip(((lab.step, lab.what) for lab in rows.ineq.labels),
+                      np.concatenate(rows.ineq.values), strict=False))
+    place = "(place blue2 blue-bin)"
+    gap = values[(place, "collision blue2 vs blue1 (margin 1 mm)")]
+    assert -1e-4 <= gap < 0.009  # set down nearer its neighbour than the robot's margin
+    robot = [what for step, what in values if step == place and "panda_" in what]
+    assert robot and all(what.endswith("(margin 10 mm)") for what in robot)
