@@ -141,10 +141,11 @@ def test_a_stacked_cube_touches_the_one_below_not_penetrates(robust):
 
 
 def test_a_carried_cube_keeps_clear_of_the_one_placed_beside_its_goal(robust):
-    """arm-pick-place p03: a is put down 1 cm from b. Held to the tight margin all the
-    way down (b was near at the place keyframe), a's corner dipped 0.8 mm into b
-    between the sample points, and the physics replay knocked b over; near keys keep
-    half their keyframe distance instead."""
+    """arm-pick-place p03: a is put down beside b (1 mm from it: what a place sets down
+    keeps the placement gap). Held to the tight margin all the way down when a stood
+    1 cm from b, a's corner once dipped 0.8 mm into b between the sample points and the
+    physics replay knocked b over; near keys keep half their keyframe distance, at
+    least the tight margin, and the carry ends straight down."""
     problem = _lowered(robust, "arm-pick-place", "p03",
                        ["(pick b start)", "(place b goal)", "(pick a start)", "(place a goal)"])
     result = solve(problem, "path")
@@ -154,7 +155,7 @@ def test_a_carried_cube_keeps_clear_of_the_one_placed_beside_its_goal(robust):
     a = transforms.pose_from_xyzquat(result.object_poses["a"][carry + 1])
     placed = problem.checker.body_distance("a", a, "b", b).distance
     assert placed < 0.02, "a is not put down beside b: the test would not test the carry"
-    assert _clearance(problem, result, carry, "b") > 0.002
+    assert _clearance(problem, result, carry, "b") > 0.0005  # 40 points a segment
 
 
 def _sunk(problem, result, depth: float):
