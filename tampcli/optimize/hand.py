@@ -43,6 +43,11 @@ class Hand:
     depth: float  # how far the fingertips reach beyond the tool origin (m)
 
 
+def narrowed(hand: Hand | None) -> bool:
+    """Whether `hand` is opened less than fully (a problem's hand narrowed to its grips)."""
+    return hand is not None and hand.values is not None
+
+
 def open_hand(world) -> Hand:
     """The hand fully open (as loaded): the arm without a narrower need, or no fingers."""
     return Hand(None, world.gripper_opening, world.fingertip_depth or 0.0)
@@ -124,7 +129,7 @@ def finger_columns(problem, events, choices: dict, n: int) -> np.ndarray | None:
     where a step ends, step) in order (assemble.assemble). None with the hand open
     as loaded: the file then leaves the fingers out, which means the same."""
     hand = problem.hand
-    if hand is None or hand.values is None:
+    if not narrowed(hand):
         return None
     opened = np.asarray(hand.values, dtype=float)
     out = np.tile(opened, (n, 1))

@@ -18,6 +18,7 @@ from tampcli.geometry.sampled_path import resample, sampled_path
 from tampcli.optimize import relocate
 from tampcli.optimize.approach import joined, lift, place_approach
 from tampcli.optimize.collide import held_spec
+from tampcli.optimize.hand import narrowed
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
 from tampcli.optimize.path import (
     allowed_contacts,
@@ -182,10 +183,8 @@ def _planar_route(run, ctx):
 
 def _margins(run, ctx, margin: float, tight: float):
     """path.motion_margins of the motion `ctx`, its straddle rule with a narrowed hand."""
-    hand = run.problem.hand
     return motion_margins(run.checker, run.problem.motions[ctx.index], ctx.q_a, ctx.q_b,
-                          ctx.held, ctx.moved, margin, tight,
-                          straddle=hand is not None and hand.values is not None)
+                          ctx.held, ctx.moved, margin, tight, straddle=narrowed(run.problem.hand))
 
 
 def _straight_line(run, ctx, T: int, checks: int, label: str):

@@ -10,6 +10,7 @@ import numpy as np
 from tampcli.geometry.sampled_path import SamplingOptions
 from tampcli.optimize.backends import BACKENDS, Slsqp
 from tampcli.optimize.grips import Kinematics
+from tampcli.optimize.hand import narrowed
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.result import TrajectoryResult
 
@@ -34,8 +35,7 @@ class Run:
 
     def result(self, status: str, **fields) -> TrajectoryResult:
         fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")
-        hand = self.problem.hand
-        fields.setdefault("narrowed", hand is not None and hand.values is not None)
+        fields.setdefault("narrowed", narrowed(self.problem.hand))
         return TrajectoryResult(status=status, stage=self.stage, names=self.problem.names,
                                 iterations=self.iterations, nlp_solves=self.nlp_solves,
                                 seconds=time.perf_counter() - self.t0, **fields)

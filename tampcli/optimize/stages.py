@@ -271,7 +271,7 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
                 contact_rows(rows.ineq, name, [c for c in found if c.a != own], at, frame,
                              h, moved, keys, opts.activation, opts.margin)
                 contact_rows(rows.ineq, name, [c for c in found if c.a == own], at, frame,
-                             h, moved, keys, opts.activation, min(opts.margin, opts.tight_margin),
+                             h, moved, keys, opts.activation, opts.tight_margin,
                              {"self": opts.margin})
             else:
                 contact_rows(rows.ineq, name, found, at, frame, h, moved, keys,
