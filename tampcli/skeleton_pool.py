@@ -37,8 +37,10 @@ class SkeletonPool:
         self._context = multiprocessing.get_context("spawn")
         # The incumbent's objective, read by every worker (run_skeleton's `incumbent`).
         self._best = self._context.RawValue("d", math.inf)
+        self._each = self._context.RawValue("d", math.nan)  # its cost per geometric action
         # perf_counter is per process: workers get the deadline on the wall clock.
-        self._init = (build, args, time.time() + (deadline - time.perf_counter()), self._best)
+        self._init = (build, args, time.time() + (deadline - time.perf_counter()), self._best,
+                      self._each)
         self._jobs = jobs
         self._executor: ProcessPoolExecutor | None = None
 
@@ -57,7 +59,8 @@ class SkeletonPool:
             self.close()
             return self._pool().submit(_run, job)
 
-    def improved(self, objective: float) -> None:
+    def improved(self, objective: float, each: float | None = None) -> None:
+        self._each.value = math.nan if each is None else each
         self._best.value = objective
 
     def _pool(self) -> ProcessPoolExecutor:
@@ -83,14 +86,19 @@ class SkeletonPool:
 
 
 class _Worker:
-    def __init__(self, build: Build, args: tuple, deadline: float, best):
+    def __init__(self, build: Build, args: tuple, deadline: float, best, each):
         local_deadline = time.perf_counter() + (deadline - time.time())
         self.evaluate, self.ops, self.is_geometric = build(*args, local_deadline)
-        self.best = best
+        self.best, self.each = best, each
 
     def run(self, job: SkeletonJob) -> SkeletonRun:
         ops = tuple(self.ops[name] for name in job.names)
-        return run_skeleton(job, ops, self.evaluate, self.is_geometric, lambda: self.best.value)
+        return run_skeleton(job, ops, self.evaluate, self.is_geometric, lambda: self.best.value,
+                            self._per_action)
+
+    def _per_action(self) -> float | None:
+        each = self.each.value
+        return None if math.isnan(each) else each
 
 
 # The one piece of state of a worker process: built by the pool's initializer,
@@ -98,11 +106,11 @@ class _Worker:
 _worker: list[_Worker] = []
 
 
-def _start(build: Build, args: tuple, deadline: float, best) -> None:
+def _start(build: Build, args: tuple, deadline: float, best, each) -> None:
     null = os.open(os.devnull, os.O_WRONLY)
     os.dup2(null, 1)
     os.dup2(null, 2)
-    _worker.append(_Worker(build, args, deadline, best))
+    _worker.append(_Worker(build, args, deadline, best, each))
 
 
 def _run(job: SkeletonJob) -> SkeletonRun:

@@ -143,6 +143,7 @@ class _Search(StageSteps):
         self.w = options.symbolic_weight
         self.started = clock()
         self.tree = PrefixTree()
+        self.prefix_reaches: dict[tuple[str, ...], Any] = {}  # prefix -> its reach result
         self.evaluated: dict[tuple[str, ...], int] = {}  # geometric actions -> rank
         self.records: list[SkeletonRecord] = []
         self.judged: dict[tuple[str, ...], Judged] = {}

@@ -35,7 +35,7 @@ from concurrent.futures import FIRST_COMPLETED, Future, wait
 from dataclasses import dataclass
 from typing import Any, Protocol
 
-from tampcli.bnb import BOUNDING, STAGES, _Search, _Trial
+from tampcli.bnb import BOUNDING, STAGES, _Search, _Trial, prefix_reach
 from tampcli.bnb.outcome import TIE
 from tampcli.bnb.prefix_bounds import Relax
 from tampcli.bnb.prefix_tree import PrefixTree, shortest_failing_prefix
@@ -55,6 +55,7 @@ class SkeletonJob:
     weight: float
     anytime: bool
     prefix_pruning: bool
+    per_action: float | None = None  # the incumbent's cost per geometric action (prefix_reach)
 
 
 @dataclass(frozen=True)
@@ -71,17 +72,19 @@ class SkeletonRun:
 
 class Workers(Protocol):
     """Where skeletons are solved: `submit` gives a Future of the SkeletonRun;
-    `improved` hears of each new incumbent (so that a skeleton already out can
-    stop at its keyframes)."""
+    `improved` hears of each new incumbent, its objective and its trajectory cost
+    per geometric action (so that a skeleton already out can stop at its keyframes,
+    or at a prefix's reach: prefix_reach.py)."""
 
     def submit(self, job: SkeletonJob) -> Future: ...
 
-    def improved(self, objective: float) -> None: ...
+    def improved(self, objective: float, each: float | None = None) -> None: ...
 
 
 def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
                  is_geometric: Callable[[Any], bool],
-                 incumbent: Callable[[], float] = lambda: math.inf) -> SkeletonRun:
+                 incumbent: Callable[[], float] = lambda: math.inf,
+                 per_action: Callable[[], float | None] = lambda: None) -> SkeletonRun:
     """The serial search's stages for one skeleton (run in a worker).
 
     `incumbent()` is the best objective known now (`Workers.improved`), maybe
@@ -102,7 +105,8 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
         return result
 
     warm = tree.warm_for(job.names)
-    for name in STAGES:
+    early = _prefix_reach(job, ops, is_geometric, incumbent, per_action, stage, tree)
+    for name in STAGES if early is None else ():
         best = min(math.inf if job.incumbent is None else job.incumbent, incumbent())
         cutoff = best - job.weight * job.symbolic \
             if name == "path" and math.isfinite(best) and not job.anytime else None
@@ -121,12 +125,29 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
         if name in BOUNDING and result.cost is not None and not job.anytime \
                 and result.cost + job.weight * job.symbolic >= best:
             break
+    if early is not None:
+        stages.append(("reach", early))
     known = {prefix for prefix, _ in job.known}
     keyframes = tuple((job.names[:i], tree.get(job.names[:i]))
                       for i in range(1, len(job.names) + 1)
                       if job.names[:i] not in known and tree.get(job.names[:i]) is not None)
     return SkeletonRun(tuple(stages), keyframes, counts[0], counts[1],
                        time.perf_counter() - started)
+
+
+def _prefix_reach(job: SkeletonJob, ops, is_geometric, incumbent, per_action, stage, tree):
+    """The reach result of a short prefix that prunes the skeleton, or None
+    (bnb/prefix_reach.py; the serial search's StageSteps._prefix_reach_prunes)."""
+    best = min(math.inf if job.incumbent is None else job.incumbent, incumbent())
+    if job.anytime or not math.isfinite(best):
+        return None
+    symbolic = job.weight * job.symbolic
+    each = job.per_action if job.per_action is not None else per_action()
+    i = prefix_reach.prefix_length(ops, is_geometric, best - symbolic, each)
+    if i is None:
+        return None
+    result = stage(ops[:i], "reach", tree.warm_for(job.names[:i]))
+    return result if prefix_reach.prunes(result, symbolic, best) else None
 
 
 def parallel_branch_and_bound(
@@ -206,7 +227,14 @@ class _ParallelSearch(_Search):
         known = tuple((p, self.tree.get(p)) for p in prefixes if self.tree.get(p) is not None)
         return SkeletonJob(trial.names, trial.symbolic, known,
                            getattr(self.incumbent, "objective", None), self.w,
-                           self.options.anytime, self.options.prefix_pruning)
+                           self.options.anytime, self.options.prefix_pruning, self._each())
+
+    def _each(self) -> float | None:
+        """The incumbent's trajectory cost per geometric action (prefix_reach.py)."""
+        if self.incumbent is None:
+            return None
+        return prefix_reach.per_action(getattr(self.incumbent.result, "cost", None),
+                                       self.incumbent.plan, self.is_geometric)
 
     def _take(self, done: _Out) -> None:
         """A skeleton's results into the books, as the serial search would have them."""
@@ -231,7 +259,7 @@ class _ParallelSearch(_Search):
         before = self.incumbent
         super()._record(trial)
         if self.incumbent is not before:
-            self.workers.improved(self.incumbent.objective)
+            self.workers.improved(self.incumbent.objective, self._each())
 
     def _failed(self, trial: _Trial, reason: str) -> None:
         trial.outcome, trial.reason = "infeasible", reason

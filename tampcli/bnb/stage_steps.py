@@ -4,6 +4,7 @@ bnb._Search, whose state (incumbent, tree, stats, records) it reads and writes."
 
 from __future__ import annotations
 
+from tampcli.bnb import prefix_reach
 from tampcli.bnb.prefix_tree import shortest_failing_prefix
 from tampcli.bnb.values import Event
 
@@ -34,6 +35,8 @@ class StageSteps:
         """Final placements, the relaxed and the real keyframes, full path: stop at the
         first that fails or whose bound cannot beat the incumbent."""
         warm = self.tree.warm_for(trial.names)
+        if self._prefix_reach_prunes(trial):
+            return
         for stage in STAGES:
             trial.reached = stage
             self.emit(Event("stage", trial.rank, trial.names, trial.symbolic, stage=stage,
@@ -45,6 +48,27 @@ class StageSteps:
                 return
             if result.status == "solved":
                 warm = result
+
+    def _prefix_reach_prunes(self, trial) -> bool:
+        """Pruned by the reach bound of a short prefix (bnb/prefix_reach.py)."""
+        if self.incumbent is None or self.options.anytime:
+            return False
+        symbolic = self.w * trial.symbolic
+        each = prefix_reach.per_action(getattr(self.incumbent.result, "cost", None),
+                                       self.incumbent.plan, self.is_geometric)
+        i = prefix_reach.prefix_length(trial.ops, self.is_geometric,
+                                       self.incumbent.objective - symbolic, each)
+        if i is None:
+            return False
+        prefix = trial.names[:i]
+        if prefix not in self.prefix_reaches:
+            self.prefix_reaches[prefix] = self._stage(trial.ops[:i], "reach",
+                                                      self.tree.warm_for(prefix))
+        result = self.prefix_reaches[prefix]
+        if not prefix_reach.prunes(result, symbolic, self.incumbent.objective):
+            return False
+        trial.reached = "reach"
+        return not self._apply_stage(trial, "reach", result)
 
     def _cutoff(self, trial, stage: str) -> float | None:
         """The trajectory cost at which `trial` cannot beat the incumbent (path stage)."""
@@ -69,8 +93,11 @@ class StageSteps:
             self._stage_failed(trial, stage, result)
             return False
         trial.kkt = getattr(result, "kkt", None) or trial.kkt
+        # A reach of fewer actions than the skeleton's is a prefix's (prefix_reach.py).
+        names = getattr(result, "names", ())
+        prefix = len(names) if 0 < len(names) < len(trial.names) else None
         if stage in BOUNDING and result.cost is not None \
-                and self._keyframe_bound_prunes(trial, result.cost, stage):
+                and self._keyframe_bound_prunes(trial, result.cost, stage, prefix):
             return False
         if stage == "path":
             trial.path_result, trial.nlp_cost = result, result.cost
@@ -108,12 +135,15 @@ class StageSteps:
                 self.learned_prefixes.append(prefix)
                 trial.reason += f" (prefix {' '.join(prefix)} is infeasible)"
 
-    def _keyframe_bound_prunes(self, trial, keyframe_cost: float, stage: str) -> bool:
+    def _keyframe_bound_prunes(self, trial, keyframe_cost: float, stage: str,
+                               prefix: int | None = None) -> bool:
         trial.heuristic_bound = keyframe_cost + self.w * trial.symbolic
         if (self.incumbent is not None and not self.options.anytime
                 and trial.heuristic_bound >= self.incumbent.objective):
             trial.outcome = "pruned"
             what = "keyframe" if stage == "keyframes" else f"{stage} (keyframes, no collisions)"
+            if prefix is not None:
+                what += f" of its first {prefix} actions"
             trial.reason = (f"{what} bound {trial.heuristic_bound:.4g} >= incumbent "
                             f"{self.incumbent.objective:.4g} (heuristic)")
             self._unproved(trial)

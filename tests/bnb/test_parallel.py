@@ -50,7 +50,7 @@ class _Threads:
 
         return self.pool.submit(run)
 
-    def improved(self, objective):
+    def improved(self, objective, each=None):
         self.best = objective
 
 
@@ -151,7 +151,7 @@ def test_jobs_is_checked():
 class _Deaf(_Threads):
     """Workers that never hear of a new incumbent."""
 
-    def improved(self, objective):
+    def improved(self, objective, each=None):
         pass
 
 
