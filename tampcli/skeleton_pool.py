@@ -20,7 +20,11 @@ from collections.abc import Callable
 from concurrent.futures import Future, ProcessPoolExecutor
 from concurrent.futures.process import BrokenProcessPool
 
+import numpy as np
+
 from tampcli.bnb.parallel import SkeletonJob, SkeletonRun, run_skeleton
+
+RANKS = 1 << 14  # the ranks whose answers the workers hear of one by one
 
 # build(*args, deadline) -> (evaluate, operators by name, is_geometric); `deadline`
 # is a perf_counter time of the worker's own.
@@ -35,9 +39,10 @@ class SkeletonPool:
 
     def __init__(self, build: Build, args: tuple, jobs: int, deadline: float):
         self._context = multiprocessing.get_context("spawn")
-        # The incumbent's objective, read by every worker (run_skeleton's `incumbent`).
-        self._best = self._context.RawValue("d", math.inf)
-        self._each = self._context.RawValue("d", math.nan)  # its cost per geometric action
+        # Each rank's answer (Workers.found): its objective, its cost per geometric
+        # action; read by every worker for the ranks below its skeleton's.
+        self._best = self._context.RawArray("d", [math.inf] * RANKS)
+        self._each = self._context.RawArray("d", [math.nan] * RANKS)
         # perf_counter is per process: workers get the deadline on the wall clock.
         self._init = (build, args, time.time() + (deadline - time.perf_counter()), self._best,
                       self._each)
@@ -59,9 +64,17 @@ class SkeletonPool:
             self.close()
             return self._pool().submit(_run, job)
 
-    def improved(self, objective: float, each: float | None = None) -> None:
-        self._each.value = math.nan if each is None else each
-        self._best.value = objective
+    def start(self) -> None:
+        """Start every worker now (each builds its World while the caller goes on),
+        rather than one at each of the first submissions."""
+        pool = self._pool()
+        for _ in range(self._jobs):
+            pool.submit(_ready)
+
+    def found(self, rank: int, objective: float, each: float | None = None) -> None:
+        if rank < RANKS and objective < self._best[rank]:  # (ranks beyond: not told)
+            self._each[rank] = math.nan if each is None else each
+            self._best[rank] = objective
 
     def _pool(self) -> ProcessPoolExecutor:
         if self._executor is None:
@@ -93,12 +106,16 @@ class _Worker:
 
     def run(self, job: SkeletonJob) -> SkeletonRun:
         ops = tuple(self.ops[name] for name in job.names)
-        return run_skeleton(job, ops, self.evaluate, self.is_geometric, lambda: self.best.value,
-                            self._per_action)
+        return run_skeleton(job, ops, self.evaluate, self.is_geometric,
+                            lambda: self._below(job.rank)[0], lambda: self._below(job.rank)[1])
 
-    def _per_action(self) -> float | None:
-        each = self.each.value
-        return None if math.isnan(each) else each
+    def _below(self, rank: int) -> tuple[float, float | None]:
+        """The best answer of a rank below `rank`: (objective, cost per action)."""
+        best = np.frombuffer(self.best, dtype=float)[:min(rank, RANKS)]
+        if not len(best) or not np.isfinite(best.min()):
+            return math.inf, None
+        i = int(best.argmin())
+        return float(best[i]), None if math.isnan(self.each[i]) else float(self.each[i])
 
 
 # The one piece of state of a worker process: built by the pool's initializer,
@@ -111,6 +128,10 @@ def _start(build: Build, args: tuple, deadline: float, best, each) -> None:
     os.dup2(null, 1)
     os.dup2(null, 2)
     _worker.append(_Worker(build, args, deadline, best, each))
+
+
+def _ready() -> None:
+    """A worker's first task: nothing beyond its initializer (SkeletonPool.start)."""
 
 
 def _run(job: SkeletonJob) -> SkeletonRun:

@@ -48,6 +48,7 @@ from tampcli.solution import SkeletonRecord
 class SkeletonJob:
     """One skeleton's NLPs, as a worker needs them (picklable)."""
 
+    rank: int
     names: tuple[str, ...]
     symbolic: float
     known: tuple[tuple[tuple[str, ...], Any], ...]  # keyframe results of its prefixes
@@ -72,13 +73,17 @@ class SkeletonRun:
 
 class Workers(Protocol):
     """Where skeletons are solved: `submit` gives a Future of the SkeletonRun;
-    `improved` hears of each new incumbent, its objective and its trajectory cost
-    per geometric action (so that a skeleton already out can stop at its keyframes,
-    or at a prefix's reach: prefix_reach.py)."""
+    `found` hears of each path a skeleton found, by its rank, as soon as its run
+    is done (whether or not the books have taken it yet): its objective and its
+    trajectory cost per geometric action. A skeleton out of a higher rank may stop
+    where it cannot beat it: at its reach or keyframe bound, its path stage's
+    cutoff, or a prefix's reach (prefix_reach.py). Only lower ranks count, so
+    what a skeleton is judged against is what the books will hold when it is
+    taken, whichever worker finished first."""
 
     def submit(self, job: SkeletonJob) -> Future: ...
 
-    def improved(self, objective: float, each: float | None = None) -> None: ...
+    def found(self, rank: int, objective: float, each: float | None = None) -> None: ...
 
 
 def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
@@ -87,11 +92,12 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
                  per_action: Callable[[], float | None] = lambda: None) -> SkeletonRun:
     """The serial search's stages for one skeleton (run in a worker).
 
-    `incumbent()` is the best objective known now (`Workers.improved`), maybe
-    lower than the job's: whatever it says, the books come out the same, as a
-    keyframe bound above it is above the incumbent when the run is taken (it
-    only falls, and only by skeletons taken before this one); it saves the path
-    stage of a skeleton that cannot win.
+    `incumbent()` is the best objective of the lower ranks known now
+    (`Workers.found`), maybe lower than the job's: it saves the later stages of a
+    skeleton that cannot win. The books come out the same whatever it says, as
+    its stages are applied in order when the run is taken, against an incumbent
+    no higher (_ParallelSearch._take: the rare answer the books then reject is
+    the exception, recorded as such).
     """
     started = time.perf_counter()
     tree, stages, counts = PrefixTree(), [], [0, 0]
@@ -184,6 +190,7 @@ class _ParallelSearch(_Search):
     def run(self) -> BnBResult:
         iterator = iter(self.skeletons)
         out: deque[_Out] = deque()
+        self.heard: set[int] = set()  # ranks whose finished runs the workers heard of
         stop = None
         while True:
             if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
@@ -194,11 +201,14 @@ class _ParallelSearch(_Search):
                 continue
             if not out or stop == "first":
                 break
-            wait([out[0].future], timeout=max(self.options.search_limit(self.incumbent is not None)
-                                         - self.elapsed(), 0.0),
-                 return_when=FIRST_COMPLETED)
+            self._tell_found(out)
             if out[0].future.done():
                 self._take(out.popleft())
+                continue
+            wait([item.future for item in out if item.trial.rank not in self.heard],
+                 timeout=max(self.options.search_limit(self.incumbent is not None)
+                             - self.elapsed(), 0.0),
+                 return_when=FIRST_COMPLETED)
         self._cancel(out, stop)
         self.records.sort(key=lambda record: record.rank)
         return self._result(stop)
@@ -225,7 +235,7 @@ class _ParallelSearch(_Search):
     def _job(self, trial: _Trial) -> SkeletonJob:
         prefixes = (trial.names[:i] for i in range(1, len(trial.names) + 1))
         known = tuple((p, self.tree.get(p)) for p in prefixes if self.tree.get(p) is not None)
-        return SkeletonJob(trial.names, trial.symbolic, known,
+        return SkeletonJob(trial.rank, trial.names, trial.symbolic, known,
                            getattr(self.incumbent, "objective", None), self.w,
                            self.options.anytime, self.options.prefix_pruning, self._each())
 
@@ -235,6 +245,24 @@ class _ParallelSearch(_Search):
             return None
         return prefix_reach.per_action(getattr(self.incumbent.result, "cost", None),
                                        self.incumbent.plan, self.is_geometric)
+
+    def _tell_found(self, out: deque[_Out]) -> None:
+        """Tell the workers of each path a finished run found, before its turn in the
+        books comes (Workers.found): the skeletons of higher ranks still out can stop
+        at the bound it sets (arm-sort: #3 and #4 ran their keyframes and path while
+        #2's answer waited on #1's)."""
+        for item in out:
+            rank = item.trial.rank
+            if rank in self.heard or not item.future.done():
+                continue
+            self.heard.add(rank)
+            if item.future.cancelled() or item.future.exception() is not None:
+                continue
+            for stage, result in item.future.result().stages:
+                if stage == "path" and result.status == "solved" and result.cost is not None:
+                    self.workers.found(rank, result.cost + self.w * item.trial.symbolic,
+                                       prefix_reach.per_action(result.cost, item.trial.ops,
+                                                               self.is_geometric))
 
     def _take(self, done: _Out) -> None:
         """A skeleton's results into the books, as the serial search would have them."""
@@ -253,13 +281,28 @@ class _ParallelSearch(_Search):
             trial.reached = stage
             if not self._apply_stage(trial, stage, result):
                 break
+        else:
+            if trial.outcome == "solved" and trial.path_result is None:
+                self._stopped_early(trial, run)
         self._record(trial)
+
+    def _stopped_early(self, trial: _Trial, run: SkeletonRun) -> None:
+        """The run stopped at a bound an answer of a lower rank set, an answer the
+        books did not keep (pruned there by a bound of its own): pruned all the
+        same, heuristically, and said so."""
+        stage, result = run.stages[-1]
+        trial.outcome = "pruned"
+        cost = getattr(result, "cost", None)
+        trial.heuristic_bound = None if cost is None else cost + self.w * trial.symbolic
+        trial.reason = (f"stopped after {stage}: it could not beat a path a skeleton of "
+                        f"a lower rank found, which the books did not keep (heuristic)")
+        self._unproved(trial)
 
     def _record(self, trial: _Trial) -> None:
         before = self.incumbent
         super()._record(trial)
         if self.incumbent is not before:
-            self.workers.improved(self.incumbent.objective, self._each())
+            self.workers.found(trial.rank, self.incumbent.objective, self._each())
 
     def _failed(self, trial: _Trial, reason: str) -> None:
         trial.outcome, trial.reason = "infeasible", reason

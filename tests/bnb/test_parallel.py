@@ -40,18 +40,22 @@ class _Threads:
 
     def __init__(self, evaluate, workers, delays=None):
         self.pool, self.evaluate, self.delays = ThreadPoolExecutor(workers), evaluate, delays
-        self.best = math.inf
+        self.answers = {}  # rank -> objective (Workers.found)
 
     def submit(self, job):
         def run():
             time.sleep((self.delays or {}).get(job.names, 0.0))
             ops = tuple(type("Op", (), {"name": n})() for n in job.names)
-            return run_skeleton(job, ops, self.evaluate, lambda op: True, lambda: self.best)
+            return run_skeleton(job, ops, self.evaluate, lambda op: True,
+                                lambda: self.best_below(job.rank))
 
         return self.pool.submit(run)
 
-    def improved(self, objective, each=None):
-        self.best = objective
+    def best_below(self, rank):
+        return min((v for r, v in list(self.answers.items()) if r < rank), default=math.inf)
+
+    def found(self, rank, objective, each=None):
+        self.answers[rank] = min(objective, self.answers.get(rank, math.inf))
 
 
 def _parallel(plans, table, workers, delays=None, **options):
@@ -151,7 +155,7 @@ def test_jobs_is_checked():
 class _Deaf(_Threads):
     """Workers that never hear of a new incumbent."""
 
-    def improved(self, objective, each=None):
+    def found(self, rank, objective, each=None):
         pass
 
 
@@ -175,3 +179,26 @@ def test_a_new_incumbent_spares_the_path_stage_of_a_skeleton_out_and_changes_no_
     assert books[0] == books[1]
     assert books[0][1][2:4] == ("pruned", "keyframes")
     assert paths == [[("c", "d")], [("c", "d"), ("x", "y")]]
+
+
+def test_a_skeleton_out_hears_of_a_lower_rank_answer_before_the_books_take_it():
+    """#1 is slow; #2's answer (objective 0.4) waits on it for its turn in the books,
+    but #3, started once #2 is done, hears of it at once (Workers.found) and stops at
+    its keyframe bound (0.5 + 0.2 >= 0.4): no path stage; the books as the serial
+    search's."""
+    plans = [(("a", "b"), 2.0), (("c", "d"), 2.0), (("e", "f"), 2.0)]
+    table = {(("a",), "path"): R("solved", 1.5), (("c",), "path"): R("solved", 0.2),
+             (("c",), "keyframes"): R("solved", 0.1),
+             (("e",), "keyframes"): R("solved", 0.5), (("e",), "path"): R("solved", 0.6)}
+    calls = []
+    evaluate = table_evaluator(table, calls)
+    threads = _Threads(evaluate, 2, delays={("a", "b"): 0.6, ("e", "f"): 0.2})
+    try:
+        result = parallel_branch_and_bound(Source(plans), threads, evaluate,
+                                           BnBOptions(jobs=2))
+    finally:
+        threads.pool.shutdown(wait=False)
+    assert (("e", "f"), "path") not in calls
+    serial = branch_and_bound(Source(plans), table_evaluator(table), BnBOptions())
+    assert _books(result) == _books(serial)
+    assert [r.outcome for r in result.skeletons] == ["solved", "solved", "pruned"]

@@ -90,7 +90,7 @@ def test_anytime_tries_no_prefix():
 class _Threads:
     def __init__(self, evaluate, workers):
         self.pool, self.evaluate = ThreadPoolExecutor(workers), evaluate
-        self.best, self.each = 1e9, None
+        self.answers = {}  # rank -> (objective, cost per action)
         self.heard = threading.Event()
 
     def submit(self, job):
@@ -98,12 +98,17 @@ class _Threads:
             if job.names != PLANS[0][0]:  # the others start once #1's answer is in
                 self.heard.wait(timeout=10)
             return run_skeleton(job, _ops(job.names), self.evaluate, lambda op: True,
-                                lambda: self.best, lambda: self.each)
+                                lambda: self.below(job.rank)[0],
+                                lambda: self.below(job.rank)[1])
 
         return self.pool.submit(run)
 
-    def improved(self, objective, each=None):
-        self.best, self.each = objective, each
+    def below(self, rank):
+        return min((v for r, v in list(self.answers.items()) if r < rank),
+                   default=(1e9, None))
+
+    def found(self, rank, objective, each=None):
+        self.answers[rank] = (objective, each)
         self.heard.set()
 
 
