@@ -1,0 +1,10 @@
+; blind14 p02: a in left, b in right; swap them, through the buffer.
+(define (problem p02)
+  (:domain xarm-swap)
+  (:objects a b left right buffer)
+  (:init (block a) (block b)
+         (slot left) (slot right) (slot buffer)
+         (at a left) (at b right)
+         (occupied left) (occupied right)
+         (handfree))
+  (:goal (and (at a right) (at b left) (handfree))))
