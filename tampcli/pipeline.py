@@ -15,7 +15,7 @@ import dataclasses
 import math
 import time
 from collections.abc import Callable, Iterator
-from contextlib import ExitStack, contextmanager
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -127,32 +127,21 @@ def solving(paths: InputPaths, options: SolveOptions = SolveOptions(),
     if inputs.scene is None:
         yield Solved(_solve_symbolic(inputs, options, timers), inputs)
         return
-    with ExitStack() as stack:
-        pool = None
-        if options.bnb.jobs > 1:
-            # Started before this process builds its World: the workers' own start
-            # (imports, World, checker: ~0.7 s each) overlaps it, and they are ready
-            # when the first skeleton goes out (bench/results/parallel.md).
-            from tampcli.skeleton_pool import SkeletonPool
+    with timers.stage("setup"):
+        # What a process pays once (pybullet and FCL imports; the simulator and the
+        # collision geometry), reported apart from the solve proper.
+        from tampcli.geometry.collision import CollisionChecker
+        from tampcli.geometry.startcheck import check_start_state
+        from tampcli.geometry.world import World
 
-            pool = stack.enter_context(SkeletonPool(
-                _worker_parts, (inputs.paths, options), options.bnb.jobs,
-                time.perf_counter() + options.bnb.time_limit))
-            pool.start()
-        with timers.stage("setup"):
-            # What a process pays once (pybullet and FCL imports; the simulator and the
-            # collision geometry), reported apart from the solve proper.
-            from tampcli.geometry.collision import CollisionChecker
-            from tampcli.geometry.startcheck import check_start_state
-            from tampcli.geometry.world import World
-
-            world = stack.enter_context(World(inputs.scene))
+        world = World(inputs.scene)
+    with world:
         with timers.stage("setup"):
             checker = CollisionChecker(world)
         with timers.stage("scene"):
             check_start_state(world, checker, inputs.scene_source)
         solution = _solve_geometric(inputs, _Geometry(world, checker), options, timers,
-                                    on_event, pool)
+                                    on_event)
         yield Solved(solution, inputs, world)
 
 
@@ -214,10 +203,7 @@ class _Geometry:
 
 
 def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
-                     timers: Timers, on_event: Callable[[Event], None] | None,
-                     pool=None) -> Solution:
-    """Branch and bound over the skeletons, then action elimination; `pool`: the
-    skeleton_pool.SkeletonPool of `--jobs` above 1 (serial without one)."""
+                     timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
         from tampcli.bnb.eliminate import ELIMINATION_SHARE, eliminate_useless
         from tampcli.bnb.lessons import first_move_proofs, teacher
@@ -272,13 +258,15 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
                   on_event=heard, learn=learn, relax=evaluate.relaxed,
                   diagnose=evaluate.violated)
     skeletons = TimedSource(source, timers)
-    if pool is None:
+    if options.bnb.jobs == 1:
         result = branch_and_bound(skeletons, evaluate, searching, **search)
     else:
         from tampcli.bnb.parallel import parallel_branch_and_bound
+        from tampcli.skeleton_pool import SkeletonPool
 
-        result = parallel_branch_and_bound(skeletons, pool, evaluate, searching, **search)
-        pool.close()  # action elimination below is this process's alone
+        with SkeletonPool(_worker_parts, (inputs.paths, options), options.bnb.jobs,
+                          deadline) as pool:
+            result = parallel_branch_and_bound(skeletons, pool, evaluate, searching, **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
     evaluate.deadline = deadline
     result = eliminate_useless(result, evaluate,

@@ -64,13 +64,6 @@ class SkeletonPool:
             self.close()
             return self._pool().submit(_run, job)
 
-    def start(self) -> None:
-        """Start every worker now (each builds its World while the caller goes on),
-        rather than one at each of the first submissions."""
-        pool = self._pool()
-        for _ in range(self._jobs):
-            pool.submit(_ready)
-
     def found(self, rank: int, objective: float, each: float | None = None) -> None:
         if rank < RANKS and objective < self._best[rank]:  # (ranks beyond: not told)
             self._each[rank] = math.nan if each is None else each
@@ -128,10 +121,6 @@ def _start(build: Build, args: tuple, deadline: float, best, each) -> None:
     os.dup2(null, 1)
     os.dup2(null, 2)
     _worker.append(_Worker(build, args, deadline, best, each))
-
-
-def _ready() -> None:
-    """A worker's first task: nothing beyond its initializer (SkeletonPool.start)."""
 
 
 def _run(job: SkeletonJob) -> SkeletonRun:

@@ -33,6 +33,18 @@ def test_two_jobs_give_the_serial_answer(cli, tmp_path, domain):
     assert check.code == 0, check.out + check.err
 
 
+def test_two_jobs_draw_no_regrasp_the_serial_search_would_not(cli, tmp_path):
+    """arm-pick-place p03 has two loopless skeletons, both feasible: the serial search
+    stops there; two jobs used to draw 18 regrasps while those two were out (the
+    source decides on regrasps by their results: LearningSource.waiting_on_results)."""
+    runs = [_solve(cli, tmp_path, "arm-pick-place", "p03", "--jobs", jobs)
+            for jobs in ("1", "2")]
+    assert all(run.code == 0 for run, _ in runs), runs[1][0].err
+    one, two = (json.loads(out.read_text()) for _, out in runs)
+    assert two["stats"]["skeletons_generated"] == one["stats"]["skeletons_generated"] == 2
+    assert two["objective"] == pytest.approx(one["objective"], abs=1e-6)
+
+
 @pytest.mark.parametrize("bad", ["0", "-1"])
 def test_a_bad_job_count_is_a_usage_error(cli, tmp_path, bad):
     run, out = _solve(cli, tmp_path, "planar-tamp", "p01", "--jobs", bad)

@@ -196,7 +196,7 @@ class _ParallelSearch(_Search):
             if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
                 stop = "time"
                 break
-            if stop is None and len(out) < 2 * self.options.jobs:
+            if stop is None and len(out) < 2 * self.options.jobs and not self._waits(out):
                 stop = self._draw_next(iterator, out)
                 continue
             if not out or stop == "first":
@@ -212,6 +212,13 @@ class _ParallelSearch(_Search):
         self._cancel(out, stop)
         self.records.sort(key=lambda record: record.rank)
         return self._result(stop)
+
+    def _waits(self, out: deque[_Out]) -> bool:
+        """Whether the next skeleton waits for those out: the source says what comes
+        next is theirs to decide (search.learned.LearningSource.waiting_on_results),
+        as the serial search would have their results when it draws it."""
+        waiting = getattr(self.skeletons, "waiting_on_results", None)
+        return bool(out) and waiting is not None and waiting()
 
     def _draw_next(self, iterator, out: deque[_Out]) -> str | None:
         """Draw one skeleton: a stop reason, or None (sent out, or pruned here)."""

@@ -38,6 +38,7 @@ import math
 from collections import deque
 from collections.abc import Callable, Iterator
 
+from tampcli.search import learned_task
 from tampcli.search.learned_task import MOVED, PROVED, Blocker, compile_task, is_subsequence
 from tampcli.task.task import Operator, Task
 
@@ -85,6 +86,7 @@ class LearningSource:
         self._compiled, self._compiled_ops = task, self._by_name
         self._plain = make_topk(task)
         self._plain_queue: deque = deque()  # plain plans pulled for the bound, not yet drawn
+        self._ahead = None  # the next skeleton, found by waiting_on_results, not yet drawn
         self._plain_done = False
         self._learned = None  # the compiled task's iterator while it has skeletons
         self._drawn: set[tuple[str, ...]] = set()  # given to branch and bound
@@ -134,6 +136,7 @@ class LearningSource:
     def _restart(self, plain: bool) -> None:
         """The learned enumeration (and the plain one when `plain`) starts again, the
         forbidden prefixes still forbidden."""
+        self._unpeek()
         if plain:
             self._plain, self._plain_done = self._make(self.task), False
         self._learned = self._make(self._compiled) if self.blockers or self.suspects else None
@@ -199,6 +202,7 @@ class LearningSource:
         return self.task.is_goal(state)
 
     def forbid_prefix(self, names: tuple[str, ...]) -> None:
+        self._unpeek()
         self._forbidden.append(tuple(names))
         self._plain.forbid_prefix(names)
         if self._learned is not None:
@@ -239,6 +243,7 @@ class LearningSource:
             while self._plain_queue and self._plain_queue[0].names in self._drawn:
                 self._plain_queue.popleft()
         candidates = [self._plain_queue[0].cost] if self._plain_queue else []
+        candidates += [self._ahead.cost] if self._ahead is not None else []
         candidates += [cost for cost, _, _ in self._deferred[:1]]
         if self._regrasps_may_come() and self._cheapest is not None:
             candidates.append(self._cheapest)
@@ -261,27 +266,48 @@ class LearningSource:
         return self
 
     def __next__(self):
-        in_a_row = 0
-        while True:
-            plan = None
-            if in_a_row < MAX_DEFERRED_IN_A_ROW:
+        plan, self._ahead = self._ahead, None
+        plan = plan or self._fresh()
+        if plan is not None:
+            return self._draw(plan)
+        if self._deferred:
+            return self._draw(heapq.heappop(self._deferred)[2])
+        if self._start_regrasps():
+            return next(self)
+        raise StopIteration
+
+    def waiting_on_results(self) -> bool:
+        """Whether what comes next (learned orders, a deferred skeleton, the regrasps
+        only no feasible one calls for) depends on how the ones drawn end, every
+        loopless one being drawn or deferred: a parallel search takes their results
+        first (arm-pick-place p03, --jobs 2: 18 regrasps drawn while its two
+        loopless skeletons, both feasible, were out)."""
+        if self._ahead is None:
+            self._ahead = self._fresh()
+        return self._ahead is None
+
+    def _unpeek(self) -> None:
+        """The skeleton waiting_on_results found goes back to the enumeration."""
+        if self._ahead is not None:
+            self._considered.discard(self._ahead.names)
+            self._plain_queue.appendleft(self._ahead)
+            self._ahead = None
+
+    def _fresh(self):
+        """The next skeleton worth drawing now (deferring others), or None."""
+        for _ in range(MAX_DEFERRED_IN_A_ROW):
+            plan = self._next_learned() or self._next_plain()
+            while plan is not None and plan.names in self._considered:
                 plan = self._next_learned() or self._next_plain()
             if plan is None:
-                if self._deferred:
-                    return self._draw(heapq.heappop(self._deferred)[2])
-                if self._start_regrasps():
-                    continue
-                raise StopIteration
-            names = plan.names
-            if names in self._considered:
-                continue
-            self._considered.add(names)
-            why = self._why_defer(names)
+                return None
+            self._considered.add(plan.names)
+            why = self._why_defer(plan.names)
             if why is None:
-                return self._draw(plan)
+                return plan
             self.stats[why] += 1
-            in_a_row += 1
             heapq.heappush(self._deferred, (plan.cost, len(self._considered), plan))
+        return None
 
     def _draw(self, plan):
         self._drawn.add(plan.names)
@@ -341,16 +367,7 @@ class LearningSource:
         return None
 
     def _loops(self, plan) -> bool:
-        """Passes a state of the task as given (no learned or proved facts) more often
-        than the enumeration allows (1 + `revisits`)."""
-        state = self._base.init
-        seen = {state: 1}
-        for op in plan.operators:
-            state = self._base.apply(state, op)
-            seen[state] = seen.get(state, 0) + 1
-            if seen[state] > 1 + self.revisits:
-                return True
-        return False
+        return learned_task.passes_twice(self._base, plan, 1 + self.revisits)
 
     def _plain_version(self, plan):
         """The plan with the task's own operators (the compiled ones carry `moved` facts)."""

@@ -51,3 +51,16 @@ def compile_task(task: Task, blockers: frozenset[Blocker],
 def is_subsequence(short: tuple[str, ...], long: tuple[str, ...]) -> bool:
     rest = iter(long)
     return all(any(name == other for other in rest) for name in short)
+
+
+def passes_twice(task: Task, plan, times: int) -> bool:
+    """Whether `plan` passes a state of `task` (as given: no learned or proved facts)
+    more than `times` times (an enumeration that allows 1 + revisits)."""
+    state = task.init
+    seen = {state: 1}
+    for op in plan.operators:
+        state = task.apply(state, op)
+        seen[state] = seen.get(state, 0) + 1
+        if seen[state] > times:
+            return True
+    return False

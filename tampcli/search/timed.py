@@ -23,6 +23,13 @@ class TimedSource:
     def solved(self, names):
         self.topk.solved(names)
 
+    def waiting_on_results(self) -> bool:
+        start = time.perf_counter()
+        try:
+            return self.topk.waiting_on_results()
+        finally:
+            self.timers.add("search", time.perf_counter() - start)
+
     def lower_bound(self) -> float:
         start = time.perf_counter()
         try:

@@ -86,3 +86,42 @@ def test_the_bound_counts_regrasps_not_drawn_while_nothing_was_feasible():
     for _ in range(loopless):
         next(plain)
     assert plain.lower_bound() == math.inf
+
+
+def test_the_source_waits_on_results_where_they_decide_what_comes_next():
+    """A parallel search asks before drawing while skeletons are out: past the
+    loopless skeletons worth drawing now, what comes next (the deferred ones, or
+    regrasps while none was feasible) is for their results to decide."""
+    task, _ = pen(1)
+    loopless = {p.names for p in TopK(task, loopless=True)}
+    src = _source(task)
+    drawn = []
+    while not src.waiting_on_results():
+        # the skeleton it looked ahead at is the next drawn, and counted by the bound
+        # until then (not drawn yet)
+        ahead = src._ahead
+        assert src.lower_bound() <= ahead.cost
+        drawn.append(next(src))
+        assert drawn[-1] is ahead
+    assert drawn and {p.names for p in drawn} <= loopless
+    assert src.waiting_on_results()  # asking again changes nothing
+    # One was feasible: the deferred loopless ones come, no regrasp (as without asking).
+    src.solved(drawn[0].names)
+    rest = list(src)
+    assert all(_revisits(task, p) == 0 for p in rest)
+    assert {p.names for p in drawn + rest} <= loopless
+
+
+def test_what_the_source_looked_ahead_at_is_not_lost_to_a_forbidden_prefix_or_learning():
+    task, _ = pen(1)
+    src = _source(task)
+    assert not src.waiting_on_results()
+    ahead = src._ahead.names
+    # a prefix it does not start with: it still comes next
+    src.forbid_prefix(("(no such action)",))
+    assert next(src).names == ahead
+    assert not src.waiting_on_results()
+    ahead = src._ahead.names
+    # a prefix it starts with: gone
+    src.forbid_prefix(ahead[:1])
+    assert all(p.names[:1] != ahead[:1] for p in _plans(src, 50))
