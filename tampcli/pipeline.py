@@ -264,7 +264,8 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
         from tampcli.bnb.parallel import parallel_branch_and_bound
         from tampcli.skeleton_pool import SkeletonPool
 
-        with SkeletonPool(_worker_parts, (inputs.paths, options), options.bnb.jobs,
+        # This process solves skeletons too: jobs - 1 workers (bnb/parallel.py).
+        with SkeletonPool(_worker_parts, (inputs.paths, options), options.bnb.jobs - 1,
                           deadline) as pool:
             result = parallel_branch_and_bound(skeletons, pool, evaluate, searching, **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})

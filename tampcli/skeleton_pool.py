@@ -22,7 +22,7 @@ from concurrent.futures.process import BrokenProcessPool
 
 import numpy as np
 
-from tampcli.bnb.parallel import SkeletonJob, SkeletonRun, run_skeleton
+from tampcli.bnb.skeleton_run import SkeletonJob, SkeletonRun, answer, run_skeleton
 
 RANKS = 1 << 14  # the ranks whose answers the workers hear of one by one
 
@@ -65,9 +65,10 @@ class SkeletonPool:
             return self._pool().submit(_run, job)
 
     def found(self, rank: int, objective: float, each: float | None = None) -> None:
-        if rank < RANKS and objective < self._best[rank]:  # (ranks beyond: not told)
-            self._each[rank] = math.nan if each is None else each
-            self._best[rank] = objective
+        _store(self._best, self._each, rank, objective, each)
+
+    def below(self, rank: int) -> tuple[float, float | None]:
+        return _below(self._best, self._each, rank)
 
     def _pool(self) -> ProcessPoolExecutor:
         if self._executor is None:
@@ -99,16 +100,32 @@ class _Worker:
 
     def run(self, job: SkeletonJob) -> SkeletonRun:
         ops = tuple(self.ops[name] for name in job.names)
-        return run_skeleton(job, ops, self.evaluate, self.is_geometric,
-                            lambda: self._below(job.rank)[0], lambda: self._below(job.rank)[1])
+        run = run_skeleton(job, ops, self.evaluate, self.is_geometric,
+                           lambda: _below(self.best, self.each, job.rank)[0],
+                           lambda: _below(self.best, self.each, job.rank)[1])
+        # Told at once, to the skeletons of higher ranks this and the other workers
+        # hold, whatever the main process is busy with (it may be solving one itself).
+        found = answer(job, run, ops, self.is_geometric)
+        if found is not None:
+            _store(self.best, self.each, job.rank, *found)
+        return run
 
-    def _below(self, rank: int) -> tuple[float, float | None]:
-        """The best answer of a rank below `rank`: (objective, cost per action)."""
-        best = np.frombuffer(self.best, dtype=float)[:min(rank, RANKS)]
-        if not len(best) or not np.isfinite(best.min()):
-            return math.inf, None
-        i = int(best.argmin())
-        return float(best[i]), None if math.isnan(self.each[i]) else float(self.each[i])
+
+def _store(best, each, rank: int, objective: float, per_action: float | None) -> None:
+    """Rank `rank`'s answer into the shared arrays, where better (ranks beyond RANKS:
+    not kept)."""
+    if rank < RANKS and objective < best[rank]:
+        each[rank] = math.nan if per_action is None else per_action
+        best[rank] = objective
+
+
+def _below(best, each, rank: int) -> tuple[float, float | None]:
+    """The best answer of a rank below `rank`: (objective, cost per action)."""
+    lower = np.frombuffer(best, dtype=float)[:min(rank, RANKS)]
+    if not len(lower) or not np.isfinite(lower.min()):
+        return math.inf, None
+    i = int(lower.argmin())
+    return float(lower[i]), None if math.isnan(each[i]) else float(each[i])
 
 
 # The one piece of state of a worker process: built by the pool's initializer,

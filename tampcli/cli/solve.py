@@ -60,9 +60,10 @@ FLAGS = (
          "'tampcli[ipopt]'), or auto (Ipopt for the large ones where it is installed; "
          "docs/ipopt.md)", choices=tuple(BACKENDS)),
     Flag("--jobs", "bnb", "jobs", int, "N",
-         "skeletons solved at once, one worker process each; 1: in this process (the "
-         "default: bench/results/parallel.md measured no gain on a shared 2-core machine, "
-         "and a worker's start costs about a second)", short="-j"),
+         "skeletons solved at once: one in this process, the others in N - 1 worker "
+         "processes; 1: serial (the default: bench/results/parallel.md measured little "
+         "gain on a shared 2-core machine, and a worker's start costs about a second)",
+         short="-j"),
 )
 
 

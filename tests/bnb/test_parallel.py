@@ -11,7 +11,8 @@ from concurrent.futures import ThreadPoolExecutor
 import pytest
 
 from tampcli.bnb import BnBOptions, branch_and_bound
-from tampcli.bnb.parallel import parallel_branch_and_bound, run_skeleton
+from tampcli.bnb.parallel import parallel_branch_and_bound
+from tampcli.bnb.skeleton_run import answer, run_skeleton
 
 from .test_bnb import R, Source, table_evaluator
 
@@ -35,27 +36,35 @@ TABLE = {
 
 
 class _Threads:
-    """Workers: a thread pool that runs whole skeletons, as a worker process does;
+    """Workers: `workers - 1` threads (the search solves one skeleton itself) that run
+    whole skeletons as worker processes do, each telling its own answer at once;
     `delays` (seconds by skeleton) scrambles the order results come back in."""
 
     def __init__(self, evaluate, workers, delays=None):
-        self.pool, self.evaluate, self.delays = ThreadPoolExecutor(workers), evaluate, delays
-        self.answers = {}  # rank -> objective (Workers.found)
+        self.pool = ThreadPoolExecutor(max(workers - 1, 1))
+        self.evaluate, self.delays = evaluate, delays
+        self.answers = {}  # rank -> (objective, cost per action) (Workers.found)
 
     def submit(self, job):
         def run():
             time.sleep((self.delays or {}).get(job.names, 0.0))
             ops = tuple(type("Op", (), {"name": n})() for n in job.names)
-            return run_skeleton(job, ops, self.evaluate, lambda op: True,
-                                lambda: self.best_below(job.rank))
+            out = run_skeleton(job, ops, self.evaluate, lambda op: True,
+                               lambda: self.below(job.rank)[0], lambda: self.below(job.rank)[1])
+            found = answer(job, out, ops, lambda op: True)
+            if found is not None:
+                self.found(job.rank, *found)
+            return out
 
         return self.pool.submit(run)
 
-    def best_below(self, rank):
-        return min((v for r, v in list(self.answers.items()) if r < rank), default=math.inf)
+    def below(self, rank):
+        return min((v for r, v in list(self.answers.items()) if r < rank),
+                   key=lambda v: v[0], default=(math.inf, None))
 
     def found(self, rank, objective, each=None):
-        self.answers[rank] = min(objective, self.answers.get(rank, math.inf))
+        if objective < self.answers.get(rank, (math.inf, None))[0]:
+            self.answers[rank] = (objective, each)
 
 
 def _parallel(plans, table, workers, delays=None, **options):
@@ -123,10 +132,16 @@ def test_the_time_limit_cancels_what_is_out():
         release.wait(5.0)
         return R("solved", 1.0)
 
+    def here(ops, stage, warm, cutoff=None):
+        # This process's NLPs end by the deadline (the pipeline's evaluator); a worker's
+        # may not be waited for.
+        release.wait(0.1)
+        return R("solved", 1.0)
+
     threads = _Threads(slow, 2)
     started = time.perf_counter()
     try:
-        result = parallel_branch_and_bound(Source(PLANS), threads, slow,
+        result = parallel_branch_and_bound(Source(PLANS), threads, here,
                                            BnBOptions(jobs=2, time_limit=0.3))
     finally:
         release.set()
@@ -182,23 +197,49 @@ def test_a_new_incumbent_spares_the_path_stage_of_a_skeleton_out_and_changes_no_
 
 
 def test_a_skeleton_out_hears_of_a_lower_rank_answer_before_the_books_take_it():
-    """#1 is slow; #2's answer (objective 0.4) waits on it for its turn in the books,
-    but #3, started once #2 is done, hears of it at once (Workers.found) and stops at
-    its keyframe bound (0.5 + 0.2 >= 0.4): no path stage; the books as the serial
-    search's."""
+    """#1, solved in this process, is slow; #2's answer (objective 0.4), found by the
+    worker meanwhile, waits on #1 for its turn in the books, but #3, queued behind it
+    in the same worker, hears of it at once (Workers.found, told by the worker
+    itself) and stops at its keyframe bound (0.5 + 0.2 >= 0.4): no path stage; the
+    books as the serial search's."""
     plans = [(("a", "b"), 2.0), (("c", "d"), 2.0), (("e", "f"), 2.0)]
     table = {(("a",), "path"): R("solved", 1.5), (("c",), "path"): R("solved", 0.2),
              (("c",), "keyframes"): R("solved", 0.1),
              (("e",), "keyframes"): R("solved", 0.5), (("e",), "path"): R("solved", 0.6)}
     calls = []
-    evaluate = table_evaluator(table, calls)
-    threads = _Threads(evaluate, 2, delays={("a", "b"): 0.6, ("e", "f"): 0.2})
+    quick = table_evaluator(table, calls)
+
+    def evaluate(ops, stage, warm, cutoff=None):
+        if ops[0].name == "a" and stage == "path":
+            time.sleep(0.6)
+        return quick(ops, stage, warm, cutoff)
+
+    threads = _Threads(evaluate, 2)
     try:
-        result = parallel_branch_and_bound(Source(plans), threads, evaluate,
-                                           BnBOptions(jobs=2))
+        result = parallel_branch_and_bound(Source(plans), threads, evaluate, BnBOptions(jobs=2))
     finally:
         threads.pool.shutdown(wait=False)
     assert (("e", "f"), "path") not in calls
     serial = branch_and_bound(Source(plans), table_evaluator(table), BnBOptions())
     assert _books(result) == _books(serial)
     assert [r.outcome for r in result.skeletons] == ["solved", "solved", "pruned"]
+
+
+def test_this_process_solves_the_first_skeleton_and_a_worker_the_next():
+    """Two jobs: the lowest rank not started is solved here, so a problem of one
+    skeleton never waits for a worker; the next goes to the worker."""
+    plans = [(("a", "b"), 2.0), (("c", "d"), 2.0)]
+    table = {(("a",), "path"): R("solved", 1.5), (("c",), "path"): R("solved", 0.2)}
+    here = threading.get_ident()
+    where = {}
+
+    def evaluate(ops, stage, warm, cutoff=None):
+        where[ops[0].name] = threading.get_ident() == here
+        return table_evaluator(table)(ops, stage, warm, cutoff)
+
+    threads = _Threads(evaluate, 2)
+    try:
+        parallel_branch_and_bound(Source(plans), threads, evaluate, BnBOptions(jobs=2))
+    finally:
+        threads.pool.shutdown(wait=False)
+    assert where == {"a": True, "c": False}

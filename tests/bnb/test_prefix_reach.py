@@ -8,7 +8,8 @@ from dataclasses import dataclass
 import pytest
 
 from tampcli.bnb import BnBOptions, branch_and_bound, prefix_reach
-from tampcli.bnb.parallel import parallel_branch_and_bound, run_skeleton
+from tampcli.bnb.parallel import parallel_branch_and_bound
+from tampcli.bnb.skeleton_run import run_skeleton
 
 from .test_bnb import Source
 
@@ -89,7 +90,7 @@ def test_anytime_tries_no_prefix():
 
 class _Threads:
     def __init__(self, evaluate, workers):
-        self.pool, self.evaluate = ThreadPoolExecutor(workers), evaluate
+        self.pool, self.evaluate = ThreadPoolExecutor(workers - 1), evaluate
         self.answers = {}  # rank -> (objective, cost per action)
         self.heard = threading.Event()
 
