@@ -157,9 +157,8 @@ class _ParallelSearch(_Search):
     def _hand_out(self, out: deque[_Out]) -> _Out | None:
         """The skeletons not started go to the workers, all but the lowest rank, which
         this process solves: returned (None when all are started). The workers queue
-        what they cannot start yet, so that they go on while this process solves
-        (arm-sort -k 6: with one skeleton queued a worker, done, waited seconds for
-        this process's skeleton to end; 43 % more CPU than serial, 10 % with all)."""
+        what they cannot start yet, so that they go on while this process solves (new
+        skeletons are handed out only between this process's own)."""
         waiting = [item for item in out if item.future is None]
         for item in waiting[1:]:
             item.future = self.workers.submit(item.job)
