@@ -24,16 +24,16 @@ class TimedSource:
         self.topk.solved(names)
 
     def waiting_on_results(self) -> bool:
-        start = time.perf_counter()
-        try:
-            return self.topk.waiting_on_results()
-        finally:
-            self.timers.add("search", time.perf_counter() - start)
+        return self._timed(self.topk.waiting_on_results)
 
     def lower_bound(self) -> float:
+        return self._timed(self.topk.lower_bound)
+
+    def _timed(self, call):
+        """`call()`, its time counted as the search's."""
         start = time.perf_counter()
         try:
-            return self.topk.lower_bound()
+            return call()
         finally:
             self.timers.add("search", time.perf_counter() - start)
 
