@@ -267,7 +267,7 @@ class LearningSource:
 
     def __next__(self):
         plan, self._ahead = self._ahead, None
-        plan = plan or self._fresh()
+        plan = self._fresh() if plan is None else plan
         if plan is not None:
             return self._draw(plan)
         if self._deferred:
