@@ -54,3 +54,17 @@ def prunes(result, symbolic_part: float, incumbent: float) -> bool:
     """Whether a prefix's reach result bounds the skeleton at or above the incumbent."""
     return (result is not None and result.status == "solved" and result.cost is not None
             and result.cost + symbolic_part >= incumbent)
+
+
+def pruning_reach(ops: Sequence[Any], is_geometric: Callable[[Any], bool], incumbent: float,
+                  symbolic_part: float, each: float | None, solve: Callable[[int], Any]):
+    """The reach result of the prefix `prefix_length` picks, where it prunes the
+    skeleton; None otherwise (no incumbent, no prefix worth it, or not pruned).
+    `solve(i)`: the reach stage of the first i actions."""
+    if not math.isfinite(incumbent):
+        return None
+    i = prefix_length(ops, is_geometric, incumbent - symbolic_part, each)
+    if i is None:
+        return None
+    result = solve(i)
+    return result if prunes(result, symbolic_part, incumbent) else None

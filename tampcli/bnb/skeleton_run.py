@@ -103,16 +103,13 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
 def _prefix_reach(job: SkeletonJob, ops, is_geometric, incumbent, per_action, stage, tree):
     """The reach result of a short prefix that prunes the skeleton, or None
     (bnb/prefix_reach.py; the serial search's StageSteps._prefix_reach_prunes)."""
+    if job.anytime:
+        return None
     best = min(math.inf if job.incumbent is None else job.incumbent, incumbent())
-    if job.anytime or not math.isfinite(best):
-        return None
-    symbolic = job.weight * job.symbolic
     each = job.per_action if job.per_action is not None else per_action()
-    i = prefix_reach.prefix_length(ops, is_geometric, best - symbolic, each)
-    if i is None:
-        return None
-    result = stage(ops[:i], "reach", tree.warm_for(job.names[:i]))
-    return result if prefix_reach.prunes(result, symbolic, best) else None
+    return prefix_reach.pruning_reach(
+        ops, is_geometric, best, job.weight * job.symbolic, each,
+        lambda i: stage(ops[:i], "reach", tree.warm_for(job.names[:i])))
 
 
 def answer(job: SkeletonJob, run: SkeletonRun, ops, is_geometric) -> tuple[float, float | None] | None:

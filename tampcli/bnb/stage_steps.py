@@ -53,19 +53,20 @@ class StageSteps:
         """Pruned by the reach bound of a short prefix (bnb/prefix_reach.py)."""
         if self.incumbent is None or self.options.anytime:
             return False
-        symbolic = self.w * trial.symbolic
+
+        def solve(i):  # each prefix's reach once (skeletons share prefixes)
+            prefix = trial.names[:i]
+            if prefix not in self.prefix_reaches:
+                self.prefix_reaches[prefix] = self._stage(trial.ops[:i], "reach",
+                                                          self.tree.warm_for(prefix))
+            return self.prefix_reaches[prefix]
+
         each = prefix_reach.per_action(getattr(self.incumbent.result, "cost", None),
                                        self.incumbent.plan, self.is_geometric)
-        i = prefix_reach.prefix_length(trial.ops, self.is_geometric,
-                                       self.incumbent.objective - symbolic, each)
-        if i is None:
-            return False
-        prefix = trial.names[:i]
-        if prefix not in self.prefix_reaches:
-            self.prefix_reaches[prefix] = self._stage(trial.ops[:i], "reach",
-                                                      self.tree.warm_for(prefix))
-        result = self.prefix_reaches[prefix]
-        if not prefix_reach.prunes(result, symbolic, self.incumbent.objective):
+        result = prefix_reach.pruning_reach(trial.ops, self.is_geometric,
+                                            self.incumbent.objective,
+                                            self.w * trial.symbolic, each, solve)
+        if result is None:
             return False
         trial.reached = "reach"
         return not self._apply_stage(trial, "reach", result)
