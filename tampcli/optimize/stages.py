@@ -262,11 +262,15 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
         for (k, name, h, frame, ignore, moved, placing), found in zip(pending, contacts,
                                                                       strict=True):
             keys, at = row_keys(bodies, ignore, h), [(keyframe_block(k), 1.0)]
-            if placing and h is not None:
-                # What is set down keeps the placement rows' gap (`apart`: 1 mm) from its
-                # neighbours, not the margin the robot keeps: the final stage packs
+            if placing and h is not None and not problem.planar:
+                # What an arm sets down keeps the placement rows' gap (`apart`: 1 mm) from
+                # its neighbours, not the margin the robot keeps: the final stage packs
                 # them so (arm-sort: cubes 1 mm apart in a bin, a keyframe NLP held to
-                # 1 cm between them failed until its tight retry).
+                # 1 cm between them failed until its tight retry). Not the planar disk's:
+                # its first suction face then solves, a straight push into a slot 1 mm
+                # from a neighbour all the way in, which the physics replay snags
+                # (robust-planar p10: the neighbour pushed 4.4 cm; the margin's keyframes
+                # fail there and the tight retry takes the NLP's own angle, drift 0).
                 own = f"held:{h.name}"
                 contact_rows(rows.ineq, name, [c for c in found if c.a != own], at, frame,
                              h, moved, keys, opts.activation, opts.margin)

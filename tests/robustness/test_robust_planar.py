@@ -207,3 +207,16 @@ def test_a_sampled_narrow_passage_gives_the_same_answer_twice(cli, tmp_path):
         runs.append(json.loads(out.read_text()))
     assert runs[0]["trajectory"] == runs[1]["trajectory"]
     assert runs[0]["cost"] == runs[1]["cost"]
+
+
+def test_a_block_set_down_between_two_stays_clear_of_them_in_the_physics_replay(cli, tmp_path):
+    """p10 sets b down 1 to 3 mm from a and c. Let within the placement gap of them at
+    its place keyframe, the disk's first suction face solved: a straight push into
+    the slot, which the replay snagged (a pushed 4.4 cm). The planar disk keeps the
+    margin there; its tight retry takes the NLP's own angle, and nothing moves."""
+    case = _case(RP, "p10")
+    out = tmp_path / "solution.json"
+    run = cli("solve", case.domain, case.problem, "--time-limit", LIMIT, "--out", out)
+    assert run.code == 0, run.err
+    check = cli("validate", case.domain, case.problem, out, "--physics")
+    assert check.code == 0, check.out + check.err
