@@ -10,7 +10,6 @@ import time
 
 import numpy as np
 
-from tampcli.optimize.backends import PATH_FTOL, Slsqp
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
 from tampcli.optimize.hand import narrows, with_hand
@@ -33,11 +32,6 @@ GRIP_BOUND = 4 * math.pi
 RETRY_JITTER = 0.4  # rad: IK seed perturbation of the second keyframe attempt
 FACE_SAME = 0.05  # rad: a contact angle this close to a face's middle is at that face
 FIXED_GRIP = 1e-6  # rad: the bounds' half width around a grip parameter kept fixed
-# The relaxation without collisions (reach) stops at the path NLPs' tolerance: its
-# cost only orders and prunes skeletons heuristically. Measured: 3-15 % fewer SLSQP
-# iterations (arm-hanoi p01's reaches 0.52 s against 0.66 s, arm-kitchen 0.49 against
-# 0.56, arm-sort 1.32 against 1.41), the same answers (objectives within 3e-5).
-RELAXED = Slsqp(PATH_FTOL)
 
 
 def beyond_reach(problem) -> str | None:
@@ -225,8 +219,7 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
             return keyframe_rows(at, layout.unpack(x), choices, run.kin, checker,
                                  run.start, collisions=collisions, anchors=run.anchors)
 
-        out = run.nlp(evaluate, layout, layout.pack(guess.blocks()), bounds,
-                      None if collisions else RELAXED)
+        out = run.nlp(evaluate, layout, layout.pack(guess.blocks()), bounds)
         if best is None or (out.status == "solved") or out.violation < best[0].violation:
             best = (out, choices, at, checker)
         if out.status == "solved" or time.perf_counter() > run.deadline:
