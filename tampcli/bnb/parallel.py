@@ -39,7 +39,7 @@ from concurrent.futures import FIRST_COMPLETED, Future, wait
 from dataclasses import dataclass
 from typing import Any, Protocol
 
-from tampcli.bnb import STAGES, _Search, _Trial, prefix_reach
+from tampcli.bnb import STAGES, _Search, _Trial
 from tampcli.bnb.outcome import TIE
 from tampcli.bnb.prefix_bounds import Relax
 from tampcli.bnb.skeleton_run import SkeletonJob, SkeletonRun, answer, run_skeleton
@@ -183,13 +183,6 @@ class _ParallelSearch(_Search):
                            getattr(self.incumbent, "objective", None), self.w,
                            self.options.anytime, self.options.prefix_pruning, self._each())
 
-    def _each(self) -> float | None:
-        """The incumbent's trajectory cost per geometric action (prefix_reach.py)."""
-        if self.incumbent is None:
-            return None
-        return prefix_reach.per_action(getattr(self.incumbent.result, "cost", None),
-                                       self.incumbent.plan, self.is_geometric)
-
     def _tell_found(self, out: deque[_Out]) -> None:
         """Tell the workers of each path a finished run found, before its turn in the
         books comes (Workers.found): the skeletons of higher ranks still out can stop
@@ -239,12 +232,6 @@ class _ParallelSearch(_Search):
         trial.reason = (f"stopped after {stage}: it could not beat a path a skeleton of "
                         f"a lower rank found, which the books did not keep (heuristic)")
         self._unproved(trial)
-
-    def _record(self, trial: _Trial) -> None:
-        before = self.incumbent
-        super()._record(trial)
-        if self.incumbent is not before:
-            self.workers.found(trial.rank, self.incumbent.objective, self._each())
 
     def _failed(self, trial: _Trial, reason: str) -> None:
         trial.outcome, trial.reason = "infeasible", reason

@@ -61,15 +61,20 @@ class StageSteps:
                                                           self.tree.warm_for(prefix))
             return self.prefix_reaches[prefix]
 
-        each = prefix_reach.per_action(getattr(self.incumbent.result, "cost", None),
-                                       self.incumbent.plan, self.is_geometric)
         result = prefix_reach.pruning_reach(trial.ops, self.is_geometric,
                                             self.incumbent.objective,
-                                            self.w * trial.symbolic, each, solve)
+                                            self.w * trial.symbolic, self._each(), solve)
         if result is None:
             return False
         trial.reached = "reach"
         return not self._apply_stage(trial, "reach", result)
+
+    def _each(self) -> float | None:
+        """The incumbent's trajectory cost per geometric action (prefix_reach.py)."""
+        if self.incumbent is None:
+            return None
+        return prefix_reach.per_action(getattr(self.incumbent.result, "cost", None),
+                                       self.incumbent.plan, self.is_geometric)
 
     def _cutoff(self, trial, stage: str) -> float | None:
         """The trajectory cost at which `trial` cannot beat the incumbent (path stage)."""

@@ -124,8 +124,9 @@ def with_hand(problem, choices: dict):
 
 def finger_columns(problem, events, choices: dict, n: int) -> np.ndarray | None:
     """(n, k) every finger joint's value (World.finger_links' order: the solution's
-    finger columns, World.finger_names, come first) at each of its n waypoints: the hand's opening, closed on a grasped object (touching it: its
-    closing width) from its grasp's waypoint to its place's. `events`: (waypoint
+    finger columns, World.finger_names, come first) at each of its n waypoints: the
+    hand's opening, closed on a grasped object (touching it: its closing width) from
+    its grasp's waypoint to its place's. `events`: (waypoint
     where a step ends, step) in order (assemble.assemble). None with the hand open
     as loaded: the file then leaves the fingers out, which means the same."""
     hand = problem.hand
