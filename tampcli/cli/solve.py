@@ -138,7 +138,8 @@ def _run_bnb(args, ui) -> int:
     with ExitStack() as keep_open:
         # The live view ends with the search; the World stays open for the video.
         with view:
-            solved = keep_open.enter_context(solving(paths, options, view.on_event))
+            solved = keep_open.enter_context(solving(paths, options, view.on_event,
+                                                     visuals=bool(args.video)))
         sol = solved.solution
         if args.out:
             solution_file.write(sol, args.out)

@@ -71,7 +71,7 @@ def geometric_violations(checked: SolutionFile, domain, problem_ast, domain_path
         scene_mod.find_modes(Path(domain_path))
     modes = load_modes(modes_path, domain) if modes_path else {}
     scene = scene_mod.load_scene(scene_path, domain, problem_ast, geometric=False)
-    with World(scene) as world:
+    with World(scene, visuals=False) as world:
         check_fits_world(checked, world, scene_path)
         plan = [parse_step(a, str(path), key=f"plan[{i}]") for i, a in enumerate(sol.plan)]
         problem = lower(plan, scene, modes, world, domain=domain)

@@ -35,7 +35,7 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, problem_path, scene_
         return None
     scene, src = read_scene(scene_path, domain, problem, modes=modes)
     warnings: list[str] = []
-    with World(scene) as world:
+    with World(scene, visuals=False) as world:
         checker = CollisionChecker(world)
         check_start_state(world, checker, src)
         contacts = start_pairs(world, checker, REPORT_DISTANCE)

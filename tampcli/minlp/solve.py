@@ -124,7 +124,7 @@ def prepare(domain_path, problem_path, scene_path, modes_path, options) -> Prepa
     modes = load_modes(modes_file, domain)
     scene, source = read_scene(str(scene_file), domain, problem, modes=modes)
     robot_footprint(scene, options.polygon_sides, True)  # a non-planar robot: refused here
-    with World(scene) as world:
+    with World(scene, visuals=False) as world:
         check_start_state(world, CollisionChecker(world), source)
         limits = (tuple(map(float, world.lower)), tuple(map(float, world.upper)),
                   tuple(map(float, world.start)))

@@ -299,7 +299,7 @@ def verify_solution_file(path, domain_path=None, problem_path=None) -> list[str]
         scene_mod.find_modes(domain_path)
     modes = load_modes(modes_path, domain) if modes_path else {}
     scene = scene_mod.load_scene(scene_path, domain, problem_ast, geometric=False)
-    with World(scene) as world:
+    with World(scene, visuals=False) as world:
         if sol.robot.get("joints") and tuple(sol.robot["joints"]) != tuple(world.joint_names):
             return [f"robot joints {sol.robot['joints']} do not match the scene's "
                     f"{list(world.joint_names)}"]

@@ -64,8 +64,9 @@ class FrameRenderer:
 @contextmanager
 def frame_renderer(job: FrameJob, world=None):
     """A FrameRenderer on `world` (the caller's open World of `job.scene`, its
-    regions already drawn: see `scenery.add_regions`), or on a World of its own."""
-    if world is not None:
+    regions already drawn: see `scenery.add_regions`), or, where that World has no
+    visual shapes to draw (World's `visuals`), on a World of its own."""
+    if world is not None and world.visuals:
         yield FrameRenderer(world, job)
         return
     from tampcli.geometry.world import World

@@ -53,7 +53,7 @@ def replay_physics(inputs, mode_kind=None, speed: float | None = None,
     from tampcli.geometry.world import World
 
     settings = settings or PhysicsSettings()
-    with World(inputs.scene) as world:
+    with World(inputs.scene, visuals=False) as world:
         replay = Replay(inputs.solution, world.tool_pose, mode_kind=mode_kind, speed=speed,
                         pause=settings.pause,
                         fingers=None if inputs.file is None else finger_rows(inputs.file, world))

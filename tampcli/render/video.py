@@ -81,7 +81,9 @@ def render_solution(source: RenderInputs | Solution | str | Path,
 
 @contextmanager
 def _borrowed_or_own(scene, world):
-    if world is not None:
+    """The caller's World where it can draw (it was loaded with its visual shapes), or
+    one of the video's own."""
+    if world is not None and world.visuals:
         yield world
         return
     from tampcli.geometry.world import World

@@ -49,8 +49,9 @@ class LoadedArm:
     fingers: FingerJoints | None
 
 
-def load_arm(pb, client: int, scene, arm: Arm) -> LoadedArm:
-    """Load `arm` at the scene's robot base; a located SceneError for what does not fit."""
+def load_arm(pb, client: int, scene, arm: Arm, visuals: bool = True) -> LoadedArm:
+    """Load `arm` at the scene's robot base (`visuals`: load_urdf's); a located SceneError
+    for what does not fit."""
     spec = scene.robot
     file_key = "urdf" if spec.model == "urdf" else "model"
 
@@ -66,7 +67,7 @@ def load_arm(pb, client: int, scene, arm: Arm) -> LoadedArm:
     uid = load_urdf(pb, client, path, base[:3, 3], transforms.matrix_to_quat(base[:3, :3]), 1.0,
                     lambda message: error(message, file_key), arm.package_paths,
                     "; name more folders in `package_paths`"
-                    if spec.model == "urdf" and not arm.package_paths else "")
+                    if spec.model == "urdf" and not arm.package_paths else "", visuals)
     _check_names(urdf, arm, error)
     finger_names = arm.fingers.joints if arm.fingers else ()
     followers = urdf.followers(finger_names)

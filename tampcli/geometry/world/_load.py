@@ -18,13 +18,16 @@ from tampcli.geometry.urdf_file import resolved_copy
 PLANAR_COLOR = (0.9, 0.5, 0.1, 1.0)
 
 
-def load_body(pb, client: int, scene: Scene, body: Body) -> int:
-    """The body's unique id in the client (static: mass 0)."""
+def load_body(pb, client: int, scene: Scene, body: Body, visuals: bool = True) -> int:
+    """The body's unique id in the client (static: mass 0); `visuals` False: without
+    the shapes only images need (a mesh's, a URDF's <visual> elements)."""
     pos, orn = body.pose[:3], body.pose[3:]
     if body.shape == "urdf":
         uid = load_urdf(pb, client, body.urdf, pos, orn, body.scale[0],
-                        lambda message: body_error(scene, body, "urdf", message))
-        pb.changeVisualShape(uid, -1, rgbaColor=body.color, physicsClientId=client)
+                        lambda message: body_error(scene, body, "urdf", message),
+                        visuals=visuals)
+        if visuals:
+            pb.changeVisualShape(uid, -1, rgbaColor=body.color, physicsClientId=client)
         return uid
     c = client
     if body.shape == "box":
@@ -42,11 +45,11 @@ def load_body(pb, client: int, scene: Scene, body: Body) -> int:
         vis = pb.createVisualShape(pb.GEOM_SPHERE, radius=body.size[0],
                                    rgbaColor=body.color, physicsClientId=c)
     else:
-        col, vis = _load_mesh(pb, c, scene, body)
+        col, vis = _load_mesh(pb, c, scene, body, visuals)
     return pb.createMultiBody(0.0, col, vis, pos, orn, physicsClientId=c)
 
 
-def _load_mesh(pb, client: int, scene: Scene, body: Body) -> tuple[int, int]:
+def _load_mesh(pb, client: int, scene: Scene, body: Body, visuals: bool) -> tuple[int, int]:
     """Collision and visual shapes of a mesh body; a file either reader refuses is a
     SceneError at the body's `mesh` key.
 
@@ -63,7 +66,7 @@ def _load_mesh(pb, client: int, scene: Scene, body: Body) -> tuple[int, int]:
                                       meshScale=list(body.scale), physicsClientId=client)
         vis = pb.createVisualShape(pb.GEOM_MESH, fileName=body.mesh,
                                    meshScale=list(body.scale), rgbaColor=body.color,
-                                   physicsClientId=client)
+                                   physicsClientId=client) if visuals else -1
     except pb.error:
         col = -1
     if col < 0:
@@ -74,9 +77,10 @@ def _load_mesh(pb, client: int, scene: Scene, body: Body) -> tuple[int, int]:
 
 
 def load_urdf(pb, client: int, path, pos, orn, scale: float, error,
-              package_paths=(), hint: str = "") -> int:
+              package_paths=(), hint: str = "", visuals: bool = True) -> int:
     """loadURDF (fixed base); `error(message)` makes the located SceneError for a file
-    it refuses, or a mesh it names that is nowhere to be found.
+    it refuses, or a mesh it names that is nowhere to be found. `visuals` False:
+    loaded without its <visual> elements (urdf_file.resolved_copy).
 
     Mesh paths PyBullet would not find itself (`package://`, or beside a
     copy of the file) are made absolute in a temporary copy; what PyBullet
@@ -86,7 +90,7 @@ def load_urdf(pb, client: int, path, pos, orn, scale: float, error,
     text, problem = None, urdf_problem(path)
     if problem is None:
         try:
-            text, problem = resolved_copy(path, package_paths, hint)
+            text, problem = resolved_copy(path, package_paths, hint, visuals)
         except ValueError as e:
             problem = str(e)
     if problem:
