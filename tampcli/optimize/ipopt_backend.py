@@ -31,6 +31,7 @@ from tampcli.optimize.nlp import (
     outcome_at,
     violation_of,
 )
+from tampcli.optimize.nlp_space import dense_hessian
 
 INSTALL = "pip install 'tampcli[ipopt]'"
 INFINITE = 2e19  # beyond Ipopt's nlp_upper_bound_inf (1e19): no bound
@@ -79,18 +80,6 @@ class _Kept:
         return self.rows
 
 
-def _dense_hessian(pairs: dict, slices: dict, nx: int) -> np.ndarray:
-    H = np.zeros((nx, nx))
-    for (a, b), block in pairs.items():
-        sa, sb = slices.get(a), slices.get(b)
-        if sa is None or sb is None:
-            continue
-        H[sa, sb] += block
-        if a != b:
-            H[sb, sa] += block.T
-    return H
-
-
 class _Callbacks:
     """The problem object cyipopt calls: one cached evaluation per x serves all.
 
@@ -107,7 +96,7 @@ class _Callbacks:
         rows = kept.rows
         self.jac_mask = np.vstack([rows.eq.pattern(ev.slices, ev.nx),
                                    rows.ineq.pattern(ev.slices, ev.nx)])
-        self.mask = _dense_hessian(rows.cost_hess, ev.slices, ev.nx) != 0
+        self.mask = dense_hessian(rows.cost_hess, ev.slices, ev.nx) != 0
         self.structure = np.nonzero(np.tril(self.mask))
         self.problem = None  # the cyipopt.Problem, for its current iterate
         self.stopped: str | None = None
@@ -139,7 +128,7 @@ class _Callbacks:
 
     def hessian(self, x, _multipliers, obj_factor):
         self.ev(x)
-        H = _dense_hessian(self.kept.rows.cost_hess, self.ev.slices, self.ev.nx)
+        H = dense_hessian(self.kept.rows.cost_hess, self.ev.slices, self.ev.nx)
         if np.any(H[~self.mask]):
             self.error = ValueError("the cost Hessian left the sparsity it had at the start")
         return obj_factor * H[self.structure]

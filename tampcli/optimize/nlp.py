@@ -15,6 +15,7 @@ import numpy as np
 from scipy.optimize import minimize
 
 from tampcli.optimize.kkt import certificate
+from tampcli.optimize.nlp_space import space_of
 from tampcli.solution_kkt import KktCertificate
 
 FEASIBILITY = 1e-4  # m or rad: max violation still called feasible
@@ -50,12 +51,14 @@ class _Evaluator:
         self._x = None
         self._out = None
         self.calls = 0
+        self.cost_hess: dict = {}  # the last rows' (Rows.cost_hess)
 
     def __call__(self, x):
         if self._x is not None and np.array_equal(x, self._x):
             return self._out
         self.calls += 1
         rows = self.evaluate(x)
+        self.cost_hess = rows.cost_hess
         grad = np.zeros(self.nx)
         for block, g in rows.cost_grad.items():
             s = self.slices.get(block)
@@ -155,11 +158,15 @@ def outcome_at(ev: _Evaluator, x, reason, iterations: int, message: str, bounds)
 def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float,
               ftol: float = 1e-6) -> NlpOutcome:
     ev = _Evaluator(evaluate, layout)
-    x0 = np.clip(np.asarray(x0, dtype=float), [b[0] for b in bounds], [b[1] for b in bounds])
+    lower, upper = [b[0] for b in bounds], [b[1] for b in bounds]
+    x0 = np.clip(np.asarray(x0, dtype=float), lower, upper)
     best = BestPoint(ev, x0)
+    _, _, eq0, _, ineq0, _, _, _ = ev(x0)
+    space = space_of(ev, bounds)
+    args = space.minimize_args(ev, bounds, len(eq0) > 0, len(ineq0) > 0)
 
-    def callback(xk):
-        best.track(xk)
+    def callback(yk):
+        best.track(space.to_x(yk))
         best.iterations += 1
         if time.perf_counter() > deadline:
             raise _Stop("time")
@@ -169,13 +176,6 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
         if best.stalled:
             raise _Stop("stall")
 
-    constraints = []
-    _, _, eq0, _, ineq0, _, _, _ = ev(x0)
-    if len(eq0):
-        constraints.append({"type": "eq", "fun": lambda x: ev(x)[2], "jac": lambda x: ev(x)[3]})
-    if len(ineq0):
-        constraints.append({"type": "ineq", "fun": lambda x: ev(x)[4],
-                            "jac": lambda x: ev(x)[5]})
     best.track(x0)
 
     def run(start, cap):
@@ -183,12 +183,11 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                res = minimize(lambda x: ev(x)[0], start, jac=lambda x: ev(x)[1],
-                               method="SLSQP", bounds=bounds, constraints=constraints,
-                               callback=callback, options={"maxiter": cap, "ftol": ftol})
+                res = minimize(x0=space.to_y(start), method="SLSQP", callback=callback,
+                               options={"maxiter": cap, "ftol": ftol}, **args)
         except _Stop as stop:
             return str(stop), f"stopped: {stop}"
-        best.track(res.x)
+        best.track(space.to_x(res.x))
         return ("iterations" if res.status == 9 else None), str(res.message)
 
     reason, message = run(x0, max_iterations)
@@ -203,7 +202,10 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
         best.progress = best.iterations
         reason, message = run(best.merit_x, max(max_iterations - best.iterations,
                                                 2 * STALL_ITERATIONS))
-    return outcome_at(ev, best.x, reason, best.iterations, message, bounds)
+    # Whitened, the bounds are rows SLSQP meets within its tolerance: the answer is
+    # put back inside them (a last step of at most that tolerance).
+    x = np.clip(best.x, lower, upper)
+    return outcome_at(ev, x, reason, best.iterations, message, bounds)
 
 
 def _worth_restart(best: BestPoint) -> bool:
