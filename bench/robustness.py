@@ -114,6 +114,14 @@ BLIND14 = {"p01": ("sort 4 cubes into 2 bins (KUKA)", 8), "p02": ("swap through 
            "p05": ("push and carry through a doorway (planar)", 3),
            "p06": ("clear a raised area (xArm6)", 6), "p07": ("inner to outer reach (KUKA)", 6),
            "p08": ("cheapest plan pushes through a fence", 3)}
+BLIND15 = {"p01": ("a cube among six close neighbours", 4),
+           "p02": ("bottle under a shelf board, side grasp (KUKA)", 4),
+           "p03": ("unstack a tower to move its base (xArm6)", 8),
+           "p04": ("tall bottle on a coaster, bar into a slot", 4),
+           "p05": ("near the base and at the reach limit (KUKA)", 6),
+           "p06": ("push a crate out of the corridor, then carry (planar)", 3),
+           "p07": ("carry through a two-turn maze (planar)", 2),
+           "p08": ("tight stack: can on a post, box, coin", 6)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -133,7 +141,7 @@ def problems() -> list[tuple[str, str, str, int]]:
     sets = (("blind2", BLIND2), ("blind3", BLIND3), ("blind4", BLIND4), ("blind5", BLIND5),
             ("blind6", BLIND6), ("blind7", BLIND7), ("blind8", BLIND8), ("blind9", BLIND9),
             ("blind10", BLIND10), ("blind11", BLIND11), ("blind12", BLIND12),
-            ("blind13", BLIND13), ("blind14", BLIND14), ("gen1", GEN1))
+            ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
     return rows
