@@ -47,9 +47,11 @@ def path(run: Run, warm) -> TrajectoryResult:
     # the disk), then the NLP's own angle, then the other faces.
     faces = list(face_grips(problem, kfr))
     result = last = None
+    run.in_the_way = ()
     for grips in faces[:1] + [None] + faces[1:]:
         if result is not None and (result.solved or result.status == "bounded"
-                                   or time.perf_counter() > run.deadline):
+                                   or time.perf_counter() > run.deadline
+                                   or _robot_in_the_way(run)):
             break
         if grips is not None and _before_the_grips(last, grips):
             continue
@@ -62,6 +64,13 @@ def path(run: Run, warm) -> TrajectoryResult:
             last = _relocated(run, warm, grips, start, path_through(run, start))
             result = last if result is None or last.solved else result
     return result
+
+
+def _robot_in_the_way(run: Run) -> bool:
+    """Whether the last motion to fail was blocked by a body the skeleton never moved,
+    against the robot itself (relocate.in_the_way): no other face of what it carries
+    makes room there (blind15 p06: a crate in a corridor, 4 s a face)."""
+    return any(part.startswith("link:") for _, part in run.in_the_way)
 
 
 def _before_the_grips(failed, grips) -> bool:

@@ -84,15 +84,56 @@ def find(run, ctx, options: SamplingOptions) -> Obstruction | None:
     return Obstruction(ctx.index, path, blockers, held, dict(ctx.moved), ignore)
 
 
+def in_the_way(run, ctx, options: SamplingOptions) -> tuple[tuple[str, str], ...]:
+    """(body, the checker's name of the robot's part: "link:..." or "held:...") for
+    each movable body still at its start pose that a
+    path of motion `ctx` runs into (nearer than the sampler's clearance), the path
+    found with all of them left out; the deepest first. () when no such body stands
+    in the way or no path is found even so.
+
+    A motion that finds no path where one exists with such a body out of the way is
+    blocked by it: its failure names the body (motion.py), and the skeletons that move
+    it first come next (bnb/lessons.py); a corridor a crate stands in otherwise fails
+    naming the wall beside it, which teaches nothing (blind15 p06)."""
+    problem = run.problem
+    m = problem.motions[ctx.index]
+    held = held_spec(ctx.held)
+    ignore = allowed_contacts(m)
+    resting = frozenset(n for n, info in problem.bodies.items()
+                        if not info.fixed and n not in ctx.moved and n not in ignore
+                        and (held is None or n != held[0]))
+    if not resting:
+        return ()
+    path = sampled_path(run.checker, ctx.q_a, ctx.q_b, problem.world.lower, problem.world.upper,
+                        body_poses=ctx.moved, held=held, ignore=ignore | resting,
+                        options=options)
+    if path is None:
+        return ()
+    dense = resample(path, PATH_POINTS)
+    found = []
+    for name in sorted(resting):
+        distance, part = _nearest(run.checker, dense, ctx.moved, held, ignore, name)
+        if distance < options.clearance:
+            found.append((distance, name, part))
+    return tuple((name, part) for _, name, part in sorted(found))
+
+
 def _clearance(checker, qs, moved: dict, held, ignore, name: str, pose) -> float:
     """Smallest distance between `name` at `pose` and the robot (and what it holds)
     over the configurations qs."""
-    poses = {**moved, name: pose}
+    return _nearest(checker, qs, {**moved, name: pose}, held, ignore, name)[0]
+
+
+def _nearest(checker, qs, poses: dict, held, ignore, name: str) -> tuple[float, str]:
+    """(smallest distance, the checker's name of the robot part or held object nearest:
+    "link:..." or "held:...") between body `name`
+    (at `poses`' pose, or its start pose) and the robot over the configurations qs."""
     rows = checker.distances_many(qs, poses, held, [ignore - {name}] * len(qs),
                                   activation=CLEAR + 0.05)
     key = f"body:{name}"
-    found = [c.distance for contacts in rows for c in contacts if key in (c.a, c.b)]
-    return min(found, default=np.inf)
+    found = [(c.distance, c.b if c.a == key else c.a) for contacts in rows
+             for c in contacts if key in (c.a, c.b)]
+    return min(found, default=(np.inf, ""), key=lambda f: f[0])
 
 
 @dataclass(frozen=True)

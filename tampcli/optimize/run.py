@@ -30,6 +30,8 @@ class Run:
         self.start = np.asarray(problem.world.start, dtype=float)
         self.rng = np.random.default_rng(problem.options.seed)
         self.obstruction = None  # relocate.Obstruction of the last motion that failed
+        # (body, robot part) that blocked the last motion to fail (relocate.in_the_way)
+        self.in_the_way: tuple[tuple[str, str], ...] = ()
         self.anchors = None  # relocate.Relocation.anchors the keyframe NLP keeps to
         self.cutoff = None  # a trajectory cost the caller has no use for reaching (bounded)
 
