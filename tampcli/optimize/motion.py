@@ -20,6 +20,7 @@ from tampcli.optimize.approach import joined, lift, place_approach
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.hand import narrowed
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
+from tampcli.optimize.planar_approach import straight
 from tampcli.optimize.path import (
     allowed_contacts,
     motion_margins,
@@ -42,11 +43,15 @@ ROUTE_ROOM = 0.03  # m: beyond the margin, the clearance a planar route pays not
 def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """One motion's path (`_solve_motion`); a carry that takes an object from, or sets
     it down among, close neighbours solved between the tops of its vertical ends
-    (approach.py), the ends joined to it. `warm`, as this returns it, ends included."""
+    (approach.py; the planar disk's: straight ends in the plane, planar_approach.py),
+    the ends joined to it. `warm`, as this returns it, ends included."""
     problem = run.problem
     m = problem.motions[ctx.index]
-    climb = lift(problem, m, ctx.q_a, ctx.held, ctx.moved, run.checker)
-    descent = place_approach(problem, m, ctx.q_b, ctx.held, ctx.moved, run.checker)
+    climb = lift(problem, m, ctx.q_a, ctx.held, ctx.moved, run.checker) or straight(
+        problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.checker, m.leave_contact)
+    descent = place_approach(problem, m, ctx.q_b, ctx.held, ctx.moved, run.checker) or \
+        straight(problem, m, ctx.q_b, ctx.q_a, ctx.held, ctx.moved, run.checker,
+                 m.enter_contact)
     if climb is None and descent is None:
         return _solve_motion(run, ctx, T, checks, label, warm)
     first = climb.rungs if climb is not None else 0
