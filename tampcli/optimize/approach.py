@@ -83,15 +83,7 @@ def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
     tool = world.tool_pose(q_b)
     rest = tool @ held.grasp
     ignore = frozenset(m.sliding)
-    # What the object itself comes near: an arm link passing a tall bottle, fingers
-    # 7 mm from a rim, are no reason to come down straight, and the detour costs
-    # (arm-sort p01: 30 s and objective 1.56 without, 109 s and 1.67 with them).
-    # Nearer than the margin less the tight one: a place the keyframe NLP could only
-    # solve inside the margin, not one it left at the margin within its tolerance.
-    near = [c for c in checker.distances(q_b, moved, held_spec(held), ignore, opts.margin,
-                                         static=False)
-            if c.distance < opts.margin - opts.tight_margin and c.a == f"held:{held.name}"
-            and contact_key(c) not in contacts]
+    near = close_to(problem, m, q_b, held, moved, checker, contacts)
     if not near:
         return None
     # A rung beside a wall is as near it as the place is (p07's: 1 mm, the tight margin).
@@ -105,6 +97,21 @@ def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
         if found is not None or height <= least:
             return found
         height = max(height / 2, least)
+
+
+def close_to(problem, m, q, held: Held, moved: dict, checker, contacts) -> list:
+    """The contacts of the object held at keyframe q of motion m nearer than the margin
+    less the tight one (9 mm) to something other than what it rests on (`contacts`):
+    a place the keyframe NLP could only solve inside the margin, not one it left at
+    the margin within its tolerance. What the object itself comes near only: an arm
+    link passing a tall bottle, fingers 7 mm from a rim, are no reason to end
+    straight, and the detour costs (arm-sort p01: 30 s and objective 1.56 without,
+    109 s and 1.67 with them)."""
+    opts = problem.options
+    return [c for c in checker.distances(q, moved, held_spec(held), frozenset(m.sliding),
+                                         opts.margin, static=False)
+            if c.distance < opts.margin - opts.tight_margin and c.a == f"held:{held.name}"
+            and contact_key(c) not in contacts]
 
 
 def _rungs(problem, q_b, tool, rest, height: float, held: Held, moved, ignore,

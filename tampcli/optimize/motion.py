@@ -20,7 +20,6 @@ from tampcli.optimize.approach import joined, lift, place_approach
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.hand import narrowed
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
-from tampcli.optimize.planar_approach import straight
 from tampcli.optimize.path import (
     allowed_contacts,
     motion_margins,
@@ -28,6 +27,7 @@ from tampcli.optimize.path import (
     sample_clearance,
     via_points,
 )
+from tampcli.optimize.planar_approach import straight
 
 LAZY_BAND = 0.01  # m: a point between waypoints this close to its limit gets its rows
 LAZY_ROUNDS = 3

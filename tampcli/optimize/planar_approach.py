@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from tampcli.optimize.approach import CHECKS, CLEAR, RUNG, SLACK, Approach
-from tampcli.optimize.collide import Held, contact_key, held_spec
+from tampcli.optimize.approach import CHECKS, CLEAR, RUNG, SLACK, Approach, close_to
+from tampcli.optimize.collide import Held, held_spec
 
 DIRECTIONS = 16
 
@@ -38,10 +38,7 @@ def straight(problem, m, q_end, q_other, held: Held | None, moved: dict, checker
     opts = problem.options
     q_end = np.asarray(q_end, dtype=float)
     ignore = frozenset(m.sliding)
-    near = [c for c in checker.distances(q_end, moved, held_spec(held), ignore, opts.margin,
-                                         static=False)
-            if c.distance < opts.margin - opts.tight_margin and c.a == f"held:{held.name}"
-            and contact_key(c) not in contacts]
+    near = close_to(problem, m, q_end, held, moved, checker, contacts)
     if not near:
         return None
     clear = min(opts.tight_margin, *(c.distance for c in near)) - SLACK

@@ -9,37 +9,24 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tampcli.geometry.collision import CollisionChecker
-from tampcli.geometry.scene import load_scene
-from tampcli.geometry.world import World
 from tampcli.optimize import relocate
 from tampcli.optimize.assemble import MotionContext
 from tampcli.optimize.blockers import blocker_of
-from tampcli.optimize.modes import load_modes
 from tampcli.optimize.motion import _blocked
 from tampcli.optimize.nlp import NlpOutcome
-from tampcli.optimize.options import OptimizeOptions
-from tampcli.optimize.problem import lower
 from tampcli.optimize.run import Run
-from tampcli.pddl import parser
 from tampcli.search.learned import Blocker
 
-from .helpers import ops
+from .helpers import lowered_folder, ops
 
 P06 = Path(__file__).resolve().parents[2] / "problems" / "blind15" / "p06"
 
 
 @pytest.fixture(scope="module")
 def corridor():
-    domain = parser.parse_domain_file(P06 / "domain.pddl")
-    problem = parser.parse_problem_file(P06 / "p06.pddl")
-    scene = load_scene(P06 / "p06.scene.toml", domain, problem)
-    modes = load_modes(P06 / "modes.toml", domain)
-    with World(scene, visuals=False) as world:
-        lowered = lower(ops("(pick box box-home)", "(place box east-goal)"), scene, modes,
-                        world, OptimizeOptions(time_limit=60.0), domain=domain,
-                        checker=CollisionChecker(world))
-        yield Run(lowered, "path")
+    skeleton = ops("(pick box box-home)", "(place box east-goal)")
+    with lowered_folder(P06, "p06", skeleton) as problem:
+        yield Run(problem, "path")
 
 
 def _through(moved=None):

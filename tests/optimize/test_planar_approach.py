@@ -9,33 +9,19 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tampcli.geometry.collision import CollisionChecker
-from tampcli.geometry.scene import load_scene
-from tampcli.geometry.world import World
-from tampcli.optimize.modes import load_modes
-from tampcli.optimize.options import OptimizeOptions
 from tampcli.optimize.planar_approach import _directions
-from tampcli.optimize.problem import lower
 from tampcli.optimize.solve import solve
-from tampcli.pddl import parser
 
-from .helpers import ops
+from .helpers import lowered_library, ops
 
 ROOT = Path(__file__).resolve().parents[2]
-DOMAIN = ROOT / "domains" / "robust-planar" / "domain.pddl"
-P10 = ROOT / "problems" / "robust-planar" / "p10"
 
 
 @pytest.fixture(scope="module")
 def slot():
-    domain = parser.parse_domain_file(DOMAIN)
-    problem = parser.parse_problem_file(P10.with_suffix(".pddl"))
-    scene = load_scene(P10.with_suffix(".scene.toml"), domain, problem)
-    modes = load_modes(DOMAIN.with_name("modes.toml"), domain)
-    with World(scene, visuals=False) as world:
-        yield lower(ops("(pick b table)", "(place b shelf)"), scene, modes, world,
-                    OptimizeOptions(time_limit=60.0), domain=domain,
-                    checker=CollisionChecker(world))
+    with lowered_library(ROOT / "problems" / "robust-planar", ROOT / "domains" / "robust-planar",
+                         "p10", ops("(pick b table)", "(place b shelf)")) as problem:
+        yield problem
 
 
 def test_the_block_goes_into_the_slot_straight_along_its_axis(slot):
