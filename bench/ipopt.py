@@ -154,9 +154,11 @@ def main() -> int:
              "Each row: one plan, its keyframes solved once, then the path stage from them by "
              "each backend, alternating; CPU seconds of the path stage (every motion's NLPs, "
              "the lazy rounds, `verify` at 10x), median of the runs.", "", *table(rows), "",
-             f"`--nlp auto` (the default) solves a path NLP of at least {IPOPT_FROM} variables "
-             "with Ipopt where cyipopt is installed, with SLSQP otherwise "
-             "(tampcli/optimize/backends.py: IPOPT_FROM)."]
+             ("`--nlp auto` (the default) solves every path NLP with SLSQP"
+              if IPOPT_FROM is None else
+              f"`--nlp auto` (the default) solves a path NLP of at least {IPOPT_FROM} "
+              "variables with Ipopt where cyipopt is installed, with SLSQP otherwise")
+             + " (tampcli/optimize/backends.py: IPOPT_FROM)."]
     OUT.write_text("\n".join(lines) + "\n")
     print("\n".join(lines))
     return 0

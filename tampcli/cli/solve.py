@@ -57,7 +57,7 @@ FLAGS = (
     Flag("--seed", "optimize", "seed", int, None, "random seed"),
     Flag("--nlp", "optimize", "nlp", str, None,
          "solver of the path stage's NLPs: slsqp, ipopt (needs cyipopt: pip install "
-         "'tampcli[ipopt]'), or auto (Ipopt for the large ones where it is installed; "
+         "'tampcli[ipopt]'), or auto (SLSQP, the faster at every size measured; "
          "docs/ipopt.md)", choices=tuple(BACKENDS)),
     Flag("--jobs", "bnb", "jobs", int, "N",
          "skeletons solved at once: one in this process, the others in N - 1 worker "

@@ -16,10 +16,11 @@ from typing import TYPE_CHECKING, ClassVar, Protocol
 if TYPE_CHECKING:
     from tampcli.optimize.nlp import NlpOutcome
 
-# Path NLPs with at least this many variables go to Ipopt under `auto`. Measured
-# (bench/results/ipopt.md, docs/ipopt.md), SLSQP's CPU time over Ipopt's on the path
-# stage: 1.0 to 1.8 from 133 variables; 0.6 to 2.1 below 100, no reliable gain.
-IPOPT_FROM = 100
+# Path NLPs with at least this many variables go to Ipopt under `auto`; None: none do.
+# Measured (bench/results/ipopt.md, docs/ipopt.md), SLSQP's CPU time over Ipopt's on the
+# path stage: 1.0 to 1.8 from 133 variables while SLSQP iterated on the NLP's own
+# variables; on whitened ones (nlp_space.py) 0.3 to 0.8 at every size, 14 to 273.
+IPOPT_FROM: int | None = None
 # SLSQP's stopping test on the change of the cost, for the path stage's NLPs: 15 to 22 %
 # fewer iterations than at 1e-6 on arm-kitchen, arm-hanoi p01 and arm-pick-place p03,
 # p05, objectives within 0.03 % (a motion's cost is 0.01 to 1 rad^2). The final and
@@ -74,17 +75,18 @@ class Ipopt:
 
 @dataclass(frozen=True)
 class Auto:
-    """Ipopt for an NLP of at least `ipopt_from` variables when cyipopt is
-    installed, SLSQP otherwise."""
+    """Ipopt for an NLP of at least `ipopt_from` variables (None: none) when cyipopt
+    is installed, SLSQP otherwise."""
 
     name: ClassVar[str] = "auto"
-    ipopt_from: int = IPOPT_FROM
+    ipopt_from: int | None = IPOPT_FROM
 
     def missing(self) -> str | None:
         return None
 
     def pick(self, size: int) -> NlpBackend:
-        if size >= self.ipopt_from and Ipopt().missing() is None:
+        if self.ipopt_from is not None and size >= self.ipopt_from \
+                and Ipopt().missing() is None:
             return Ipopt()
         return Slsqp(PATH_FTOL)
 
