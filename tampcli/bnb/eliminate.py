@@ -12,8 +12,10 @@ The shorter skeleton has a lower symbolic cost than the answer, so the search
 has often drawn it already (the blocker moved away, less the move, is the
 skeleton that failed first). It is not optimized again when the search found it
 infeasible before its path stage (no record: the search's says why; those NLPs
-would fail again), nor when it solved it (its path is taken, a record saying
-so); one pruned by a bound, or that failed at its path stage (sampled starts:
+would fail again), nor when its path stage failed on a body the skeleton leaves
+in the way (optimize/motion.py: it would meet that body again), nor when it
+solved it (its path is taken, a record saying so); one pruned by a bound, or
+that failed otherwise at its path stage (sampled starts:
 blind7 p03's carry through a maze failed in the 2-action skeleton and passed in
 a 4-action one), is evaluated, its record naming the search's: a plan with an
 action fewer is taken whatever its objective. `stats["elimination_skeletons"]` counts the records added here, after
@@ -29,6 +31,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from tampcli.bnb.values import Judged
+from tampcli.optimize.motion import IN_THE_WAY
 from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
 
@@ -55,7 +58,8 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
             shorter = tuple(shorter)
             names = tuple(op.name for op in shorter)
             known = result.judged.get(names)
-            if known is not None and known.outcome == "infeasible" and known.stage != "path":
+            if known is not None and known.outcome == "infeasible" and (
+                    known.stage != "path" or _met_in_the_way(result, known)):
                 skipped += 1
                 continue
             symbolic = float(sum(op.cost for op in shorter))
@@ -91,6 +95,15 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
     result.stats["elimination_skeletons"] = added
     result.stats["elimination_skipped"] = skipped
     return result
+
+
+def _met_in_the_way(result, known: Judged) -> bool:
+    """Whether the search's path stage failed that skeleton on a body it leaves in the
+    way (optimize.motion: a path exists only with the body out of it): run again, the
+    same skeleton meets the same body (blind15 p06: the answer less the push of the
+    crate out of the corridor, 12 s to fail again)."""
+    record = next((r for r in result.skeletons if r.rank == known.rank), None)
+    return record is not None and IN_THE_WAY in (record.reason or "")
 
 
 def _again(known: Judged | None) -> str:

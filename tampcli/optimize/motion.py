@@ -160,6 +160,9 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         and run.in_the_way else out
 
 
+IN_THE_WAY = "in the way of every path found"  # the end of a `_blocked` row's words
+
+
 def _blocked(out, label: str, blocking):
     """`out` failed, its worst row the first body in the way: (body, robot part)."""
     (body, part), *others = blocking
@@ -167,7 +170,7 @@ def _blocked(out, label: str, blocking):
     more = f" (and {', '.join(b for b, _ in others)})" if others else ""
     return dataclasses.replace(
         out, status="infeasible",
-        worst=f"{label}: collision {part} vs {body}{more}: in the way of every path found "
+        worst=f"{label}: collision {part} vs {body}{more}: {IN_THE_WAY} "
               "(one was found with it out of the way)")
 
 

@@ -101,3 +101,20 @@ def test_a_shorter_skeleton_that_failed_at_its_path_stage_is_tried_again():
     assert [op.name for op in result.best_plan] == list(SHORT)
     assert result.stats["elimination_skipped"] == 0
     assert result.stats["actions_eliminated"] == 2
+
+
+def test_a_shorter_skeleton_that_met_a_body_in_its_way_is_not_tried_again():
+    """blind15 p06: the answer less the push of the crate out of the corridor is the
+    skeleton whose carry met the crate in every path; run again it meets it again."""
+    from tampcli.optimize.motion import IN_THE_WAY
+
+    calls = []
+    row = f"motion 1 before (place a g): collision planar_body vs b: {IN_THE_WAY} (...)"
+    table = {(SHORT, "path"): R("infeasible", worst_constraint=row)}
+    result = branch_and_bound(plans(SHORT, LONG), table_evaluator(table, calls),
+                              BnBOptions(prefix_pruning=False))
+    assert result.judged[SHORT].stage == "path"
+    calls.clear()
+    result = eliminate_useless(result, table_evaluator({}, calls), drop_b, 0.1, float("inf"))
+    assert calls == [] and [op.name for op in result.best_plan] == list(LONG)
+    assert result.stats["elimination_skipped"] == 1
