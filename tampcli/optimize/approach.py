@@ -70,7 +70,8 @@ def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
              ) -> Approach | None:
     """The vertical end of carry m at keyframe q_b, where the object rests on
     `contacts`, when something else is nearer to the object than the margin less the
-    tight margin there (9 mm); None otherwise.
+    tight margin there (9 mm), or it rests on a body that moves (`_stacked`); None
+    otherwise.
     Its height: the neighbours' tops plus CLEAR over the object's bottom, within
     [margin + CLEAR / 2, MAX_HEIGHT]; where IK cannot reach a rung or one comes nearer
     than the tight margin to anything (or than the place to its neighbours, less
@@ -84,10 +85,10 @@ def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
     rest = tool @ held.grasp
     ignore = frozenset(m.sliding)
     near = close_to(problem, m, q_b, held, moved, checker, contacts)
-    if not near:
+    if not near and not _stacked(problem, contacts):
         return None
     # A rung beside a wall is as near it as the place is (p07's: 1 mm, the tight margin).
-    clear = min(opts.tight_margin, *(c.distance for c in near)) - SLACK
+    clear = min([opts.tight_margin, *(c.distance for c in near)]) - SLACK
     bottom = rest[2, 3] - problem.bodies[held.name].half[2]
     tops = [t for t in (_top(problem, contact_key(c), moved) for c in near) if t is not None]
     least = opts.margin + CLEAR / 2
@@ -97,6 +98,15 @@ def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
         if found is not None or height <= least:
             return found
         height = max(height / 2, least)
+
+
+def _stacked(problem, contacts) -> bool:
+    """Whether the object rests on a body that moves (a stack): a carry that slid onto
+    or off its top would drag it (blind15 p08: a cap carried sideways onto a can that
+    stands on a post, its bottom level with the can's top for the last 5 cm; the physics
+    replay knocked the can over)."""
+    return any(name in problem.bodies and not problem.bodies[name].fixed
+               for name in contacts)
 
 
 def close_to(problem, m, q, held: Held, moved: dict, checker, contacts) -> list:
