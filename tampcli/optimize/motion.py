@@ -86,6 +86,7 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """
     problem = run.problem
     opts = problem.options
+    run.in_the_way = ()  # this motion's own finding only
     line, line_violation = _straight_line(run, ctx, T, checks, label)
     if line_violation <= FEASIBILITY:
         return line
