@@ -92,12 +92,15 @@ def central_differences(f, x, h: float = 1e-6) -> np.ndarray:
     return np.array(cols).T
 
 
-def solved_in_physics(cli, folder: Path, tmp_path: Path, time_limit: int = 60) -> dict:
+def solved_in_physics(cli, folder: Path, tmp_path: Path, time_limit: int = 60,
+                      domain: Path | None = None, problem: Path | None = None) -> dict:
     """`validate --json --physics` of `solve`'s answer to folder's domain.pddl and
-    p.pddl, both asserted to succeed; the replay's `physics` object."""
+    p.pddl (or `domain` and `problem`), both asserted to succeed; the replay's
+    `physics` object."""
     import json
 
-    domain, problem = folder / "domain.pddl", folder / "p.pddl"
+    domain = domain or folder / "domain.pddl"
+    problem = problem or folder / "p.pddl"
     out = tmp_path / "solution.json"
     solved = cli("solve", "--quiet", "--time-limit", str(time_limit), "--out", out, domain,
                  problem)

@@ -11,8 +11,6 @@ exempt last segment), `validate --physics` invalid.
 
 from __future__ import annotations
 
-import json
-
 import numpy as np
 import pytest
 
@@ -27,7 +25,7 @@ from tampcli.optimize.solve import solve
 from tampcli.optimize.verify import verify
 from tampcli.pddl import parser
 
-from .helpers import ROOT, ops
+from .helpers import ROOT, ops, solved_in_physics
 
 SAMPLES = 20  # distance checks per segment (the path NLP checks a few)
 
@@ -83,14 +81,8 @@ def test_the_approach_keeps_the_margin_from_the_pushed_object_until_its_last_seg
 
 
 def test_robust_arm_p09_push_is_valid_under_physics(cli, tmp_path):
-    domain = ROOT / "domains" / "robust-arm" / "domain.pddl"
-    problem = ROOT / "problems" / "robust-arm" / "p09.pddl"
-    out = tmp_path / "solution.json"
-    solved = cli("solve", "--quiet", "--time-limit", "60", "--out", out, domain, problem)
-    assert solved.code == 0, solved.err
-    run = cli("validate", "--json", "--physics", domain, problem, out)
-    data = json.loads(run.out)
-    assert run.code == 0, data["violations"]
-    physics = data["physics"]
+    physics = solved_in_physics(cli, ROOT, tmp_path,
+                                domain=ROOT / "domains" / "robust-arm" / "domain.pddl",
+                                problem=ROOT / "problems" / "robust-arm" / "p09.pddl")
     assert physics["overlaps"] == []  # no pass into the crate deeper than 1 mm
     assert physics["objects"]["crate"]["distance"] < 0.002

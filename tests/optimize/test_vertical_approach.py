@@ -175,14 +175,6 @@ def test_a_stack_on_a_can_on_a_post_stands_in_the_physics_replay(cli, tmp_path):
     cap. The cap's carry ended sideways, its bottom level with the can's top for the
     last 5 cm, and the physics replay knocked the can off the post (10.6 cm); a place
     onto a body that moves now comes straight down onto it."""
-    import json
-
     folder = ROOT / "problems" / "blind15" / "p08"
-    domain, problem = folder / "domain.pddl", folder / "p08.pddl"
-    out = tmp_path / "solution.json"
-    solved = cli("solve", "--quiet", "--time-limit", "60", "--out", out, domain, problem)
-    assert solved.code == 0, solved.err
-    run = cli("validate", "--json", "--physics", domain, problem, out)
-    data = json.loads(run.out)
-    assert run.code == 0, data["violations"]
-    assert max(o["distance"] for o in data["physics"]["objects"].values()) < 0.003
+    physics = solved_in_physics(cli, folder, tmp_path, problem=folder / "p08.pddl")
+    assert max(o["distance"] for o in physics["objects"].values()) < 0.003
