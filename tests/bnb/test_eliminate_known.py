@@ -1,6 +1,8 @@
 """Action elimination meets skeletons the search already judged: none is optimized twice."""
 
 from collections import Counter
+
+import pytest
 from pathlib import Path
 
 from tampcli.bnb import BnBOptions, branch_and_bound
@@ -118,3 +120,25 @@ def test_a_shorter_skeleton_that_met_a_body_in_its_way_is_not_tried_again():
     result = eliminate_useless(result, table_evaluator({}, calls), drop_b, 0.1, float("inf"))
     assert calls == [] and [op.name for op in result.best_plan] == list(LONG)
     assert result.stats["elimination_skipped"] == 1
+
+
+def test_a_dear_answer_left_by_elimination_yields_to_a_cheaper_minimal_plan():
+    """blind15 p02: the answer less its useless moves cost 9.89 where a plan the search
+    had solved, with nothing to drop, cost 1.56: that one is the answer."""
+    other = ("(pick c)", "(place c)")
+    table = {(other, "path"): R("solved", 1.0), (LONG, "keyframes"): R("solved", 0.5),
+             (LONG, "path"): R("solved", 0.5), (SHORT, "path"): R("solved", 10.0)}
+    result = branch_and_bound(plans(other, LONG), table_evaluator(table),
+                              BnBOptions(prefix_pruning=False))
+    assert [op.name for op in result.best_plan] == list(LONG)
+    operators = {name: Op(name) for name in (*other, *LONG)}
+    result = eliminate_useless(result, table_evaluator(table), drop_b, 0.1, float("inf"),
+                               operators)
+    assert result.stats["actions_eliminated"] == 2
+    assert [op.name for op in result.best_plan] == list(other)
+    assert result.best_objective == pytest.approx(1.0 + 0.1 * 2)
+    # Without the task's operators, the shorter answer stays, dear as it is.
+    result = branch_and_bound(plans(other, LONG), table_evaluator(table),
+                              BnBOptions(prefix_pruning=False))
+    result = eliminate_useless(result, table_evaluator(table), drop_b, 0.1, float("inf"))
+    assert [op.name for op in result.best_plan] == list(SHORT)
