@@ -1,9 +1,9 @@
 """Action elimination meets skeletons the search already judged: none is optimized twice."""
 
 from collections import Counter
+from pathlib import Path
 
 import pytest
-from pathlib import Path
 
 from tampcli.bnb import BnBOptions, branch_and_bound
 from tampcli.bnb.eliminate import eliminate_useless
