@@ -122,6 +122,12 @@ BLIND15 = {"p01": ("a cube among six close neighbours", 4),
            "p06": ("push a crate out of the corridor, then carry (planar)", 3),
            "p07": ("carry through a two-turn maze (planar)", 2),
            "p08": ("tight stack: can on a post, box, coin", 6)}
+BLIND16 = {"p01": ("push a crate out, pick a cube into its spot (KUKA)", 3),
+           "p02": ("clear a walled dock in a forced order (planar)", 6),
+           "p03": ("pack three objects into one tray", 6),
+           "p04": ("swap two cubes via a spare spot (xArm6)", 6),
+           "p05": ("objects touching at the start", 4),
+           "p06": ("long carries over a 40 cm wall (KUKA)", 4)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -141,7 +147,8 @@ def problems() -> list[tuple[str, str, str, int]]:
     sets = (("blind2", BLIND2), ("blind3", BLIND3), ("blind4", BLIND4), ("blind5", BLIND5),
             ("blind6", BLIND6), ("blind7", BLIND7), ("blind8", BLIND8), ("blind9", BLIND9),
             ("blind10", BLIND10), ("blind11", BLIND11), ("blind12", BLIND12),
-            ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("gen1", GEN1))
+            ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("blind16", BLIND16),
+            ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
     return rows
