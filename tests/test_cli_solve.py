@@ -88,3 +88,19 @@ def test_piped_output_is_plain_lines(cli, tmp_path):
     text = run.out + run.err
     assert not any(ch in text for ch in "┏┃━╇")
     assert "(pick box start)\n(place box goal)\n" in run.out  # the seed's push is a drag
+
+
+def test_the_report_says_which_face_each_push_pushes(cli, tmp_path):
+    """robust-planar-push p02: the crate (unturned) pushed east from `start` to
+    `corner`, then north to `goal`: the -x face, then the -y face, by the disk's rim,
+    within the middle half of the 10 cm face; the terminal says so too."""
+    problem = PROBLEMS / "robust-planar-push" / "p02.pddl"
+    run, sol = _solve(cli, tmp_path, "robust-planar-push", problem)
+    assert run.code == 0, run.err
+    pushes = [g for g in sol["grasps"] if g["family"] == "push"]
+    assert [(g["action"], g["face"], g["pusher"]) for g in pushes] == [
+        ("(push crate start corner bench)", "-x", "rim"),
+        ("(push crate corner goal bench)", "-y", "rim")]
+    assert all(abs(g["offset"]) <= 0.5 * 0.05 + 1e-6 for g in pushes)
+    loud = cli("solve", DOMAINS / "robust-planar-push" / "domain.pddl", problem)
+    assert "push (push crate start corner bench): the disk's rim on crate's -x face" in loud.err

@@ -1,8 +1,9 @@
 """How each grasp of an answer holds its object, in terms a user can check
 against the scene: the family, the pair of faces the fingers close on, the
 width between them, a side grasp's pitch and the hand's opening; for the
-planar robot, the contact angle of its suction. Written to solution.json's
-`grasps` and printed by `solve` (docs/formats.md, "solution.json")."""
+planar robot, the contact angle of its suction; and how each push touches its
+object (the face, the pusher, the offset). Written to solution.json's `grasps`
+and printed by `solve` (docs/formats.md, "solution.json")."""
 
 from __future__ import annotations
 
@@ -25,10 +26,13 @@ def grasp_report(problem, choices: dict, keyframes) -> tuple[dict, ...]:
     side grasp's pitch, a suction's contact angle) hold it."""
     out = []
     for step in problem.steps:
-        if step.kind.fingers is not True:
-            continue
         choice = choices.get(step.index)
         t = keyframes.grip.get(step.index)
+        if getattr(step.kind, "within_cone", False) and choice is not None:
+            out.append(push_entry(problem, step, choice, t))
+            continue
+        if step.kind.fingers is not True:
+            continue
         entry = {"action": step.name, "object": step.obj}
         if problem.planar:
             entry.update(family="suction", contact_angle=None if t is None else float(t))
@@ -45,10 +49,38 @@ def grasp_report(problem, choices: dict, keyframes) -> tuple[dict, ...]:
     return tuple(out)
 
 
+# A box's face by the angle of its inward normal in the object's frame (push_contact),
+# in quarter turns: 0 pushes the -x face (towards +x).
+_BOX_FACES = {0: "-x", 1: "-y", 2: "+x", 3: "+y"}
+
+
+def push_entry(problem, step, choice, t) -> dict:
+    """How a push touches its object: the face (a box's `-x`, `+y`, ...: the face
+    pushed, the object moving away from it; a cylinder's direction of push in its own
+    frame, degrees), the pusher (`rim` for the planar disk; an arm's hand `down`, the
+    open fingers' side on the face, or `level`, its fingertips on it) and the contact's
+    offset from the face's middle along the face (m)."""
+    angle = choice.face if choice.face is not None else 0.0
+    if problem.bodies[step.obj].disk:
+        face = f"{math.degrees(angle):.0f} deg"
+    else:
+        face = _BOX_FACES[round(angle / (0.5 * math.pi)) % 4]
+    pusher = "rim" if problem.planar else ("level" if choice.level else "down")
+    return {"action": step.name, "object": step.obj, "family": "push", "face": face,
+            "pusher": pusher, "offset": None if t is None else float(t)}
+
+
 def grasp_words(entry: dict) -> str:
     """One line for the terminal: `(pick a t): top, fingers on a's ±y faces (5.0 cm
-    apart), hand opened 6.2 cm`."""
+    apart), hand opened 6.2 cm`; `(push c x y): the hand down, its fingers' side on c's
+    -x face, 0.4 cm off its middle`."""
     head = f"{entry['action']}: {entry.get('family', '?')}"
+    if entry.get("family") == "push":
+        pusher = {"rim": "the disk's rim", "down": "the hand down, its fingers' side",
+                  "level": "the hand level, its fingertips"}.get(entry.get("pusher"), "?")
+        words = f"{entry['action']}: {pusher} on {entry['object']}'s {entry.get('face')} face"
+        offset = entry.get("offset")
+        return words + ("" if offset is None else f", {100 * offset:.1f} cm off its middle")
     if entry.get("family") == "suction":
         angle = entry.get("contact_angle")
         return head + ("" if angle is None else f", contact angle {math.degrees(angle):.0f} deg")
