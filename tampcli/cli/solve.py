@@ -179,7 +179,7 @@ def _summary(sol, ui, args) -> None:
             ui.info(f"solved: trajectory cost {sol.cost:.4f}, objective {sol.objective:.4f}, "
                     f"{len(sol.trajectory)} waypoints")
             for entry in sol.grasps:
-                ui.info(f"{'push' if entry.get('family') == 'push' else 'grasp'} "
+                ui.info(f"{entry['family'] if 'pusher' in entry else 'grasp'} "
                         f"{grasp_words(entry)}")
             _certificate(sol, ui)
     else:

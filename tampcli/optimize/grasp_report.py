@@ -55,7 +55,7 @@ _BOX_FACES = {0: "-x", 1: "-y", 2: "+x", 3: "+y"}
 
 
 def push_entry(problem, step, choice, t) -> dict:
-    """How a push touches its object: the face (a box's `-x`, `+y`, ...: the face
+    """How a push touches its object (its family: the kind's name): the face (a box's `-x`, `+y`, ...: the face
     pushed, the object moving away from it; a cylinder's direction of push in its own
     frame, degrees), the pusher (`rim` for the planar disk; an arm's hand `down`, the
     open fingers' side on the face, or `level`, its fingertips on it) and the contact's
@@ -66,7 +66,7 @@ def push_entry(problem, step, choice, t) -> dict:
     else:
         face = _BOX_FACES[round(angle / (0.5 * math.pi)) % 4]
     pusher = "rim" if problem.planar else ("level" if choice.level else "down")
-    return {"action": step.name, "object": step.obj, "family": "push", "face": face,
+    return {"action": step.name, "object": step.obj, "family": step.kind.name, "face": face,
             "pusher": pusher, "offset": None if t is None else float(t)}
 
 
@@ -75,7 +75,7 @@ def grasp_words(entry: dict) -> str:
     apart), hand opened 6.2 cm`; `(push c x y): the hand down, its fingers' side on c's
     -x face, 0.4 cm off its middle`."""
     head = f"{entry['action']}: {entry.get('family', '?')}"
-    if entry.get("family") == "push":
+    if "pusher" in entry:
         pusher = {"rim": "the disk's rim", "down": "the hand down, its fingers' side",
                   "level": "the hand level, its fingertips"}.get(entry.get("pusher"), "?")
         words = f"{entry['action']}: {pusher} on {entry['object']}'s {entry.get('face')} face"
