@@ -81,6 +81,17 @@ class GuessWalk:
                                  horizon=margin)
         return max(0.0, margin - d)
 
+    def clashes(self, qs, moved, ignores) -> list[float]:
+        """`clash` of each of the configurations qs (nothing held), each with its own
+        ignored names, in one batched query: the same answers, row by row."""
+        checker, margin = self.problem.checker, self.problem.options.margin
+        if checker is None or not len(qs):
+            return [0.0] * len(qs)
+        found = checker.distances_many(np.array(qs), moved, None,
+                                       [frozenset(i) for i in ignores], margin, static=False)
+        return [max(0.0, margin - min((c.distance for c in cs), default=math.inf))
+                for cs in found]
+
     @staticmethod
     def angle(v) -> float:
         return float(math.atan2(v[1], v[0]))

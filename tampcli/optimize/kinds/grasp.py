@@ -199,16 +199,28 @@ def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
     best = None
     for rank, name in enumerate(step.kind.families):
         family = F.FAMILIES[name]
+        found = []  # (choice, t, q, residual, [(q, residual) at the place, both turns])
         for choice, t in itertools.product(family.choices(info, problem.world.gripper_opening),
                                            family.starts):
             walk.choices[step.index] = choice
             grip = walk.grip_of(step)
             q, res = walk.solve_ik(obj_pose @ transforms.pose_inverse(grip.matrix(t)))
-            clash = walk.clash(q, moved, ignore={step.obj})
+            found.append((choice, t, q, res, _ik_at_place(walk, place, grip, t)))
+        # The family's clashes in one batched query: the grips, then their places.
+        at_place = [tried for *_, tries in found for tried in tries]
+        clashes = walk.clashes(
+            [q for _, _, q, _, _ in found] + [q for q, _ in at_place], moved,
+            [{step.obj}] * len(found) + [{place[0].obj, place[0].support}] * len(at_place)
+            if place is not None else [{step.obj}] * len(found))
+        at = len(found)
+        for i, (choice, t, q, res, tries) in enumerate(found):
             far, clash_place = False, 0.0
-            if place is not None:
-                far, clash_place = _at_place(walk, place, grip, t, moved)
-            score = (res > walk.IK_TOLERANCE, far, round(clash + clash_place, 3),
+            if tries:
+                # The better turn at the place (the place's own choice, kinds/place.py).
+                far, clash_place = min((r > walk.IK_TOLERANCE, clashes[at + j])
+                                       for j, (_, r) in enumerate(tries))
+                at += len(tries)
+            score = (res > walk.IK_TOLERANCE, far, round(clashes[i] + clash_place, 3),
                      0 if walk.jitter else rank, float(np.linalg.norm(q - walk.q_prev)))
             if best is None or score < best[0]:
                 best = (score, choice, t, q)
@@ -227,16 +239,12 @@ def _place_of(walk, step):
     return None
 
 
-def _at_place(walk, place, grip, t: float, moved) -> tuple[bool, float]:
-    """(unreachable, clash) of the hand holding by `grip` at the placement, at its yaw
-    or the half turn (the place's own choice, kinds/place.py), whichever is better."""
+def _ik_at_place(walk, place, grip, t: float) -> list:
+    """[(q, IK residual)] of the hand holding by `grip` at the placement, at its yaw and
+    the half turn (the place's own choice, kinds/place.py); [] without a placement."""
+    if place is None:
+        return []
     later, p = place
     hold = transforms.pose_inverse(grip.matrix(t))
-    best = None
-    for turn in (0.0, math.pi):
-        target = pose_matrix(p.x, p.y, later.rest_z, p.yaw + turn) @ hold
-        q, res = walk.solve_ik(target)
-        score = (res > walk.IK_TOLERANCE,
-                 walk.clash(q, moved, ignore={later.obj, later.support}))
-        best = score if best is None or score < best else best
-    return best
+    return [walk.solve_ik(pose_matrix(p.x, p.y, later.rest_z, p.yaw + turn) @ hold)
+            for turn in (0.0, math.pi)]
