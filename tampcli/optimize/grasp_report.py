@@ -55,11 +55,11 @@ _BOX_FACES = {0: "-x", 1: "-y", 2: "+x", 3: "+y"}
 
 
 def push_entry(problem, step, choice, t) -> dict:
-    """How a push touches its object (its family: the kind's name): the face (a box's `-x`, `+y`, ...: the face
-    pushed, the object moving away from it; a cylinder's direction of push in its own
-    frame, degrees), the pusher (`rim` for the planar disk; an arm's hand `down`, the
-    open fingers' side on the face, or `level`, its fingertips on it) and the contact's
-    offset from the face's middle along the face (m)."""
+    """How a push touches its object (its family: the kind's name): the face (a box's
+    `-x`, `+y`, ...: the face pushed, the object moving away from it; a cylinder's
+    direction of push in its own frame, degrees), the pusher (`rim` for the planar
+    disk; an arm's hand `down`, the open fingers' side on the face, or `level`, its
+    fingertips on it) and the contact's offset from the face's middle along it (m)."""
     angle = choice.face if choice.face is not None else 0.0
     if problem.bodies[step.obj].disk:
         face = f"{math.degrees(angle):.0f} deg"
