@@ -168,8 +168,6 @@ def resolved_copy(urdf_path: str, package_paths=(), hint: str = "", visuals: boo
     """
     roots = search_roots(urdf_path, package_paths)
     text = Path(urdf_path).read_text(encoding="utf-8", errors="replace")
-    if not visuals:
-        text = without_visuals(text)
     here = roots[0]
     found_all, copy = {}, False
     for filename in dict.fromkeys(read_urdf(urdf_path).meshes):
@@ -183,6 +181,8 @@ def resolved_copy(urdf_path: str, package_paths=(), hint: str = "", visuals: boo
         copy = copy or not (here / filename.removeprefix(PACKAGE)).is_file()
     if visuals and not copy:
         return None, None
+    if not visuals:  # stripped only now: a missing mesh's line is the file's own
+        text = without_visuals(text)
     # The copy lives elsewhere: every mesh path in it must be absolute.
     for old, new in found_all.items():
         text = text.replace(f'"{old}"', f'"{new}"').replace(f"'{old}'", f"'{new}'")

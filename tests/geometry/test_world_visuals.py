@@ -47,14 +47,17 @@ def test_without_visuals_keeps_links_joints_and_collisions():
 def test_a_missing_visual_mesh_is_refused_with_or_without_visuals(tmp_path):
     urdf = tmp_path / "thing.urdf"
     urdf.write_text(
-        "<robot name='thing'><link name='base'>"
-        "<visual><geometry><mesh filename='nowhere.obj'/></geometry></visual>"
-        "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>"
+        "<robot name='thing'>\n<link name='base'>\n"
+        "<visual><geometry><mesh filename='nowhere.obj'/></geometry></visual>\n"
+        "<collision><geometry><box size='0.1 0.1 0.1'/></geometry></collision>\n"
         "</link></robot>")
     scene = planar_scene()
     thing = dataclasses.replace(scene.bodies[0], name="thing", shape="urdf", urdf=str(urdf))
     scene = dataclasses.replace(scene, bodies=scene.bodies + (thing,))
+    messages = []
     for visuals in (True, False):
         with pytest.raises(SceneError) as info:
             World(scene, visuals=visuals)
         assert info.value.key == "objects.urdf" and "nowhere.obj" in info.value.message
+        messages.append(info.value.message)
+    assert messages[0] == messages[1]  # the same line of the file, however it is loaded
