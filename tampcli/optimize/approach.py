@@ -126,22 +126,17 @@ def close_to(problem, m, q, held: Held, moved: dict, checker, contacts) -> list:
 
 def _rungs(problem, q_b, tool, rest, height: float, held: Held, moved, ignore,
            clear: float):
-    world, checker, opts = problem.world, problem.checker, problem.options
+    world = problem.world
     n = max(1, int(np.ceil(height / RUNG - 1e-9)))
     targets, qs, seed = [], [], q_b
-
-    def clear_at(q) -> bool:
-        return checker.min_distance(q, moved, held_spec(held), ignore, static=False,
-                                    horizon=opts.margin) >= clear
-
     for j in range(1, n + 1):
         rise = height * j / n
         up = tool.copy()
         up[2, 3] += rise
         q, residual = world.ik(up, seed=seed, restarts=0)
         q = np.asarray(q, dtype=float)
-        between = [(1 - s) * seed + s * q for s in np.arange(1, CHECKS + 1) / (CHECKS + 1)]
-        if residual > IK_TOLERANCE or not all(clear_at(p) for p in [q, *between]):
+        if residual > IK_TOLERANCE or not rung_clear(problem, seed, q, held, moved, ignore,
+                                                     clear):
             return None
         target = rest.copy()
         target[2, 3] += rise
@@ -149,6 +144,15 @@ def _rungs(problem, q_b, tool, rest, height: float, held: Held, moved, ignore,
         qs.append(np.asarray(q, dtype=float))
         seed = q
     return Approach(tuple(targets), tuple(qs))
+
+
+def rung_clear(problem, prev, q, held: Held, moved, ignore, clear: float) -> bool:
+    """Whether the rung q, and CHECKS points on the segment to it from `prev`, are
+    `clear` of everything (the robot and what it holds)."""
+    checker, horizon = problem.checker, problem.options.margin
+    between = [(1 - s) * prev + s * q for s in np.arange(1, CHECKS + 1) / (CHECKS + 1)]
+    return all(checker.min_distance(p, moved, held_spec(held), ignore, static=False,
+                                    horizon=horizon) >= clear for p in [q, *between])
 
 
 def _top(problem, key: str, moved) -> float | None:

@@ -10,7 +10,7 @@ tight margin at the keyframe (approach.vertical's test), the carry ends with a
 straight entry instead: rungs RUNG apart along one direction, far enough for
 the object to leave its close neighbours (its length and CLEAR), each no nearer
 to anything than the tight margin (or than the keyframe is, less SLACK), with
-CHECKS points checked between two. The directions tried: along the faces of the
+approach.CHECKS points checked between two (approach.rung_clear). The directions tried: along the faces of the
 close contacts (across their normals: the slot's axis), then DIRECTIONS even
 ones; those nearest the way to the motion's other end first. A pick from such
 a slot starts with the same exit, mirrored. None where no direction is clear:
@@ -21,8 +21,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from tampcli.optimize.approach import CHECKS, CLEAR, RUNG, SLACK, Approach, close_to
-from tampcli.optimize.collide import Held, held_spec
+from tampcli.optimize.approach import CLEAR, RUNG, SLACK, Approach, close_to, rung_clear
+from tampcli.optimize.collide import Held
 
 DIRECTIONS = 16
 
@@ -72,20 +72,14 @@ def _directions(near, toward: np.ndarray) -> list[np.ndarray]:
 
 
 def _rungs(problem, q_end, d, length: float, held: Held, moved, ignore, clear: float):
-    world, checker, opts = problem.world, problem.checker, problem.options
+    world = problem.world
     n = max(1, int(np.ceil(length / RUNG - 1e-9)))
     rest = world.tool_pose(q_end) @ held.grasp
     targets, qs, prev = [], [], q_end
-
-    def clear_at(q) -> bool:
-        return checker.min_distance(q, moved, held_spec(held), ignore, static=False,
-                                    horizon=opts.margin) >= clear
-
     for j in range(1, n + 1):
         q = q_end + d * (length * j / n)
-        between = [(1 - s) * prev + s * q for s in np.arange(1, CHECKS + 1) / (CHECKS + 1)]
         if np.any(q < world.lower) or np.any(q > world.upper) \
-                or not all(clear_at(p) for p in [q, *between]):
+                or not rung_clear(problem, prev, q, held, moved, ignore, clear):
             return None
         target = rest.copy()
         target[:2, 3] += q - q_end

@@ -207,20 +207,18 @@ def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
             q, res = walk.solve_ik(obj_pose @ transforms.pose_inverse(grip.matrix(t)))
             found.append((choice, t, q, res, _ik_at_place(walk, place, grip, t)))
         # The family's clashes in one batched query: the grips, then their places.
-        at_place = [tried for *_, tries in found for tried in tries]
-        clashes = walk.clashes(
-            [q for _, _, q, _, _ in found] + [q for q, _ in at_place], moved,
-            [{step.obj}] * len(found) + [{place[0].obj, place[0].support}] * len(at_place)
-            if place is not None else [{step.obj}] * len(found))
-        at = len(found)
-        for i, (choice, t, q, res, tries) in enumerate(found):
+        at_place = [q for *_, tries in found for q, _ in tries]
+        beside = {place[0].obj, place[0].support} if place is not None else set()
+        clashes = walk.clashes([q for _, _, q, _, _ in found] + at_place, moved,
+                               [{step.obj}] * len(found) + [beside] * len(at_place))
+        of_place = iter(clashes[len(found):])
+        for (choice, t, q, res, tries), clash in zip(found, clashes, strict=False):
             far, clash_place = False, 0.0
             if tries:
                 # The better turn at the place (the place's own choice, kinds/place.py).
-                far, clash_place = min((r > walk.IK_TOLERANCE, clashes[at + j])
-                                       for j, (_, r) in enumerate(tries))
-                at += len(tries)
-            score = (res > walk.IK_TOLERANCE, far, round(clashes[i] + clash_place, 3),
+                far, clash_place = min([(r > walk.IK_TOLERANCE, next(of_place))
+                                        for _, r in tries])
+            score = (res > walk.IK_TOLERANCE, far, round(clash + clash_place, 3),
                      0 if walk.jitter else rank, float(np.linalg.norm(q - walk.q_prev)))
             if best is None or score < best[0]:
                 best = (score, choice, t, q)
