@@ -47,13 +47,58 @@ class IkMemo:
         if found is None:
             found = solve_ik(world, target, seed, position_only, iterations, restarts,
                              tolerance, rng_seed)
-            if len(self._answers) + len(self._missed) >= self.limit:
-                self._answers.clear()
-                self._missed.clear()
-            self._answers[key] = found
-            if found[1] > tolerance and restarts > 0:
-                self._missed[where] = found
+            self._keep(key, where, found, tolerance, restarts)
         return found[0].copy(), found[1]
+
+    def ask_many(self, world, targets, seeds, rng_seeds, position_only, iterations, restarts,
+                 tolerance) -> list[tuple[np.ndarray, float]]:
+        """`ask` of each (target, seed, rng_seed) in turn, the same answers; the first
+        seeds of the questions not answered before run side by side as one batch
+        (`_levenberg_marquardt_batch`, each target its own), and only a target its
+        first seed misses goes on to its other seeds, one question at a time.
+
+        The keyframe guess asks a grasp family's grips, and their places, at once
+        (kinds/grasp.py); most are reached from the first seed (arm-sort: 589 of
+        661 targets)."""
+        settings = np.array([position_only, iterations, restarts, tolerance], dtype=float)
+        rows = slice(0, 3) if position_only else slice(0, 6)
+        targets = [np.asarray(t, dtype=float) for t in targets]
+        asked = []
+        for target, seed in zip(targets, seeds, strict=True):
+            where = target.tobytes() + settings.tobytes()
+            asked.append((where, where + (b"" if seed is None else
+                                          np.asarray(seed, dtype=float).tobytes())))
+        firsts: dict[bytes, int] = {}  # key -> question whose first seed is solved
+        for i, (where, key) in enumerate(asked):
+            if key not in self._answers and where not in self._missed:
+                firsts.setdefault(key, i)
+        order, first = list(firsts.values()), {}
+        if order:
+            starts = np.array([_seed_list(world, seeds[i], 0, None)[0] for i in order])
+            qs, res = _levenberg_marquardt_batch(
+                world, np.array([targets[i] for i in order], dtype=float), starts, rows,
+                iterations, tolerance, in_order=False)
+            first = {asked[i][1]: (qs[j], float(res[j])) for j, i in enumerate(order)}
+        out = []
+        for i, (where, key) in enumerate(asked):
+            found = self._answers.get(key) or self._missed.get(where)
+            if found is None:
+                tries = _seed_list(world, seeds[i], restarts, rng_seeds[i])
+                # (the memo cleared at its limit since: asked afresh)
+                q, res = first[key] if key in first else _levenberg_marquardt(
+                    world, targets[i], tries[0], rows, iterations, tolerance)
+                found = _finish(world, targets[i], tries, q, res, rows, iterations, tolerance)
+                self._keep(key, where, found, tolerance, restarts)
+            out.append((found[0].copy(), found[1]))
+        return out
+
+    def _keep(self, key, where, found, tolerance, restarts) -> None:
+        if len(self._answers) + len(self._missed) >= self.limit:
+            self._answers.clear()
+            self._missed.clear()
+        self._answers[key] = found
+        if found[1] > tolerance and restarts > 0:
+            self._missed[where] = found
 
 
 def solve_ik(world, target, seed, position_only, iterations, restarts, tolerance, rng_seed):
@@ -66,18 +111,32 @@ def solve_ik(world, target, seed, position_only, iterations, restarts, tolerance
     the first in order that succeeds. A target no seed reaches (arm-sort: 66 of
     661 targets, 10 seeds of ~40 steps each, 6.2 s of its 7.4 s of IK) costs about
     as many batched steps as its longest seed takes instead of the sum of all."""
+    seeds = _seed_list(world, seed, restarts, rng_seed)
+    rows = slice(0, 3) if position_only else slice(0, 6)
+    first_q, first_res = _levenberg_marquardt(world, target, seeds[0], rows, iterations,
+                                              tolerance)
+    return _finish(world, target, seeds, first_q, first_res, rows, iterations, tolerance)
+
+
+def _seed_list(world, seed, restarts, rng_seed) -> list[np.ndarray]:
+    """The seeds in the order they are tried: the caller's, the start, then `restarts`
+    random ones drawn from `rng_seed`."""
     lower, upper = world.lower, world.upper
-    rng = np.random.default_rng(rng_seed)
     seeds = []
     if seed is not None:
         seeds.append(np.clip(np.asarray(seed, dtype=float), lower, upper))
     seeds.append(np.clip(world.start, lower, upper))
-    finite_lo = np.where(np.isfinite(lower), lower, -np.pi)
-    finite_hi = np.where(np.isfinite(upper), upper, np.pi)
-    seeds.extend(rng.uniform(finite_lo, finite_hi) for _ in range(restarts))
-    rows = slice(0, 3) if position_only else slice(0, 6)
-    best_q, best_res = _levenberg_marquardt(world, target, seeds[0], rows, iterations,
-                                            tolerance)
+    if restarts:
+        rng = np.random.default_rng(rng_seed)
+        finite_lo = np.where(np.isfinite(lower), lower, -np.pi)
+        finite_hi = np.where(np.isfinite(upper), upper, np.pi)
+        seeds.extend(rng.uniform(finite_lo, finite_hi) for _ in range(restarts))
+    return seeds
+
+
+def _finish(world, target, seeds, best_q, best_res, rows, iterations, tolerance):
+    """solve_ik's answer once its first seed gave (best_q, best_res): the other seeds
+    run (side by side) only where the first missed."""
     if best_res <= tolerance or len(seeds) == 1:
         return best_q, float(best_res)
     qs, res = _levenberg_marquardt_batch(world, target, np.array(seeds[1:]), rows,
@@ -126,30 +185,36 @@ def _levenberg_marquardt(world, target, q, rows, iterations, tolerance):
     return q, norm
 
 
-def _levenberg_marquardt_batch(world, target, qs, rows, iterations, tolerance):
+def _levenberg_marquardt_batch(world, targets, qs, rows, iterations, tolerance,
+                               in_order: bool = True):
     """`_levenberg_marquardt` from each row of qs (S, n) at once: (final qs, residuals).
 
-    Each seed keeps its own damping and stall count and stops by the same rules;
-    the batch stops once the first seed in order that reached `tolerance` has no
-    seed before it still running (its answer is then the one a sequential run
-    returns), or when every seed has stopped."""
+    `targets`: (S, 4, 4), each row's own, or (1, 4, 4), one for all. Each row keeps
+    its own damping and stall count and stops by the same rules. `in_order` (seeds
+    of one target, tried in turn): the batch stops once the first row in order that
+    reached `tolerance` has no row before it still running (its answer is then the
+    one a sequential run returns); otherwise (independent questions), or when no
+    row has reached it, once every row has stopped."""
     lower, upper = world.lower, world.upper
     chain, tool = world.chain, world._tool_index
     eye = np.eye(rows.stop - rows.start)
+    targets = np.asarray(targets, dtype=float).reshape(-1, 4, 4)
 
-    def evaluate(q):
+    def evaluate(q, which):
         frames = chain.fk_batch(q)
-        return frames, _pose_errors(frames[:, tool], target)[:, rows]
+        aim = targets if len(targets) == 1 else targets[which]
+        return frames, _pose_errors(frames[:, tool], aim)[:, rows]
 
     qs = np.array(qs, dtype=float)
-    frames, err = evaluate(qs)
+    frames, err = evaluate(qs, slice(None))
     norm = np.linalg.norm(err, axis=1)
     damping = np.full(len(qs), 1e-2)
     stalled = np.zeros(len(qs), dtype=int)
     running = norm > tolerance
     for _ in range(iterations):
         reached = np.flatnonzero(norm <= tolerance)
-        if not running.any() or (len(reached) and not running[:reached[0]].any()):
+        if not running.any() or (in_order and len(reached)
+                                 and not running[:reached[0]].any()):
             break
         a = np.flatnonzero(running)
         jac = chain.tool_jacobian_batch(frames[a], tool)[:, rows]
@@ -163,7 +228,7 @@ def _levenberg_marquardt_batch(world, target, qs, rows, iterations, tolerance):
         big = np.maximum(np.abs(step).max(axis=1), 1e-12)
         step *= np.minimum(1.0, MAX_STEP / big)[:, None]
         q_new = np.clip(q + step, lower, upper)
-        frames_new, err_new = evaluate(q_new)
+        frames_new, err_new = evaluate(q_new, a)
         norm_new = np.linalg.norm(err_new, axis=1)
         better = norm_new < norm[a]
         good = a[better]
@@ -179,9 +244,10 @@ def _levenberg_marquardt_batch(world, target, qs, rows, iterations, tolerance):
 
 
 def _pose_errors(current: np.ndarray, target: np.ndarray) -> np.ndarray:
-    """`pose_error` of each of (S, 4, 4) poses: (S, 6)."""
-    dp = target[:3, 3] - current[:, :3, 3]
-    rel = np.matmul(target[:3, :3], current[:, :3, :3].transpose(0, 2, 1))
+    """`pose_error` of each of (S, 4, 4) poses against `target`: (4, 4), (1, 4, 4) or
+    (S, 4, 4), one per pose: (S, 6)."""
+    dp = target[..., :3, 3] - current[:, :3, 3]
+    rel = np.matmul(target[..., :3, :3], current[:, :3, :3].transpose(0, 2, 1))
     return np.concatenate([dp, transforms.rotation_logs(rel)], axis=1)
 
 

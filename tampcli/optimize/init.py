@@ -51,11 +51,22 @@ class GuessWalk:
         return grip_of(self.problem, step, self.choices)
 
     def solve_ik(self, target):
+        seed, rng_seed = self._ik_seeds()
+        return self.world.ik(target, seed=seed, rng_seed=rng_seed)
+
+    def solve_ik_many(self, targets) -> list:
+        """[`solve_ik` of each target in turn]: the same random draws, in the same
+        order, and the same answers; the IK solved as one batch (World.ik_many)."""
+        seeds, rng_seeds = zip(*(self._ik_seeds() for _ in targets), strict=True) \
+            if targets else ((), ())
+        return self.world.ik_many(targets, seeds, rng_seeds)
+
+    def _ik_seeds(self) -> tuple[np.ndarray, int]:
+        """(IK seed, rng seed) of the next question: q_prev, jittered on a retry."""
         world = self.world
         seed = self.q_prev + self.rng.normal(0.0, self.jitter, len(self.q_prev)) \
             if self.jitter else self.q_prev
-        seed = np.clip(seed, world.lower, world.upper)
-        return world.ik(target, seed=seed, rng_seed=int(self.rng.integers(1 << 30)))
+        return np.clip(seed, world.lower, world.upper), int(self.rng.integers(1 << 30))
 
     def best_of(self, targets, held=None, ignore=frozenset()):
         """IK for each (target, tag): reachable first, then the least deep within the
@@ -63,8 +74,8 @@ class GuessWalk:
         both are within the 1 cm margin; blind2 p01), then closest to q_prev."""
         best = None
         moved = {n: t for n, t in self.poses.items() if n not in (held or ("",))[0:1]}
-        for target, tag in targets:
-            q, res = self.solve_ik(target)
+        answers = self.solve_ik_many([target for target, _ in targets])
+        for (_, tag), (q, res) in zip(targets, answers, strict=True):
             clash = round(self.clash(q, moved, held, ignore), 3) if len(targets) > 1 else 0.0
             score = (res > self.IK_TOLERANCE, clash, float(np.linalg.norm(q - self.q_prev)))
             if best is None or score < best[0]:

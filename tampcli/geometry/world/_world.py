@@ -259,14 +259,16 @@ class World:
            restarts: int = 8, tolerance: float = 1e-5, rng_seed: int = 0):
         """Joint values that put the tool at `target` (4x4): returns (q, residual).
 
-        Damped least squares from `seed`, the start configuration, then
-        random seeds, within the joint limits. `residual` is the norm of
-        [position error (m), orientation error (rad)] (position only when
-        `position_only`); the caller decides whether it is small enough.
-        A question asked before gets the same answer (ik.IkMemo).
-        """
+        Damped least squares from `seed`, the start configuration, then random seeds,
+        within the joint limits. `residual`: the norm of [position error (m),
+        orientation error (rad)] (position only when `position_only`); the caller
+        judges it. A question asked before gets the same answer (ik.IkMemo)."""
         return self._ik.ask(self, np.asarray(target, dtype=float), seed, position_only,
                             iterations, restarts, tolerance, rng_seed)
+
+    def ik_many(self, targets, seeds, rng_seeds, restarts: int = 8, tolerance: float = 1e-5):
+        """[`ik` of each (target, seed, rng_seed)], first seeds batched (IkMemo.ask_many)."""
+        return self._ik.ask_many(self, targets, seeds, rng_seeds, False, 200, restarts, tolerance)
 
     def body_pose(self, name: str) -> np.ndarray:
         """Start pose (4x4) of a scene body."""

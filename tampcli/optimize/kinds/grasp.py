@@ -199,13 +199,20 @@ def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:
     best = None
     for rank, name in enumerate(step.kind.families):
         family = F.FAMILIES[name]
-        found = []  # (choice, t, q, residual, [(q, residual) at the place, both turns])
+        # Each grip's IK target, then its place's (both turns), asked as one batch.
+        grips, targets = [], []
         for choice, t in itertools.product(family.choices(info, problem.world.gripper_opening),
                                            family.starts):
             walk.choices[step.index] = choice
             grip = walk.grip_of(step)
-            q, res = walk.solve_ik(obj_pose @ transforms.pose_inverse(grip.matrix(t)))
-            found.append((choice, t, q, res, _ik_at_place(walk, place, grip, t)))
+            at_place = _place_targets(place, grip, t)
+            grips.append((choice, t, len(at_place)))
+            targets += [obj_pose @ transforms.pose_inverse(grip.matrix(t)), *at_place]
+        answers = iter(walk.solve_ik_many(targets))
+        found = []  # (choice, t, q, residual, [(q, residual) at the place, both turns])
+        for choice, t, n_place in grips:
+            q, res = next(answers)
+            found.append((choice, t, q, res, [next(answers) for _ in range(n_place)]))
         # The family's clashes in one batched query: the grips, then their places.
         at_place = [q for *_, tries in found for q, _ in tries]
         beside = {place[0].obj, place[0].support} if place is not None else set()
@@ -237,12 +244,11 @@ def _place_of(walk, step):
     return None
 
 
-def _ik_at_place(walk, place, grip, t: float) -> list:
-    """[(q, IK residual)] of the hand holding by `grip` at the placement, at its yaw and
-    the half turn (the place's own choice, kinds/place.py); [] without a placement."""
+def _place_targets(place, grip, t: float) -> list:
+    """The tool poses holding by `grip` at the placement, at its yaw and the half turn
+    (the place's own choice, kinds/place.py); [] without a placement."""
     if place is None:
         return []
     later, p = place
     hold = transforms.pose_inverse(grip.matrix(t))
-    return [walk.solve_ik(pose_matrix(p.x, p.y, later.rest_z, p.yaw + turn) @ hold)
-            for turn in (0.0, math.pi)]
+    return [pose_matrix(p.x, p.y, later.rest_z, p.yaw + turn) @ hold for turn in (0.0, math.pi)]
