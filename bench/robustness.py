@@ -128,6 +128,12 @@ BLIND16 = {"p01": ("push a crate out, pick a cube into its spot (KUKA)", 3),
            "p04": ("swap two cubes via a spare spot (xArm6)", 6),
            "p05": ("objects touching at the start", 4),
            "p06": ("long carries over a 40 cm wall (KUKA)", 4)}
+BLIND17 = {"p01": ("two tables at different heights (KUKA)", 4),
+           "p02": ("stack onto an object moved first (xArm6, base turned)", 4),
+           "p03": ("a blocker moved aside and put back", 6),
+           "p04": ("action costs make a relay cheaper (KUKA, base turned)", 6),
+           "p05": ("empty a hazard zone, negative forall goal (planar)", 6),
+           "p06": ("a plank turned into a rack past posts", 4)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -148,6 +154,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind6", BLIND6), ("blind7", BLIND7), ("blind8", BLIND8), ("blind9", BLIND9),
             ("blind10", BLIND10), ("blind11", BLIND11), ("blind12", BLIND12),
             ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("blind16", BLIND16),
+            ("blind17", BLIND17),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
