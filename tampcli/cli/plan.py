@@ -8,7 +8,8 @@ improving the plan with weighted A* restarts (weights 5, 3, 2, 1) bounded by
 the incumbent's cost, printing each better plan, until the time limit.
 `--search astar` alone uses LM-cut (optimal), or h_max when the task has
 conditional effects. With -k > 1 the top-k planner returns the K cheapest
-plans and --search/--heuristic do not apply.
+plans and --search/--heuristic do not apply; --loopless keeps only those that
+pass no state twice, the enumeration `solve` draws its skeletons from first.
 """
 
 from __future__ import annotations
@@ -34,7 +35,8 @@ def add_parser(p) -> None:
                    help="number of plans (default 1). -k 1: one plan from --search; with the "
                         "default lama not necessarily the cheapest (--search astar: a cheapest "
                         "one). -k K >= 2: the K cheapest plans, exactly, cheapest first (the "
-                        "top-k planner; --search and --heuristic do not apply)")
+                        "top-k planner; --search and --heuristic do not apply), plans that "
+                        "pass a state twice included unless --loopless")
     p.add_argument("--search", choices=sorted(SEARCHES), default=None,
                    help="search algorithm (default lama: lazy greedy search alternating h_FF "
                         "with the landmark count, preferred operators from h_FF, as Fast "
@@ -56,7 +58,8 @@ def add_parser(p) -> None:
                    help="write the plan to FILE (with -k K >= 2: the cheapest, the others "
                         "to FILE.1, FILE.2, ...; with --anytime: the best so far)")
     p.add_argument("--loopless", action="store_true",
-                   help="with -k: only plans that never revisit a state")
+                   help="with -k K >= 2: only plans that never revisit a state, the "
+                        "skeletons solve draws first, in its order")
 
 
 def _format_cost(cost: float) -> str:
