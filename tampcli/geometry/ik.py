@@ -77,8 +77,10 @@ class IkMemo:
             starts = np.array([_seed_list(world, seeds[i], 0, None)[0] for i in order])
             qs, res = _levenberg_marquardt_batch(
                 world, np.array([targets[i] for i in order], dtype=float), starts, rows,
-                iterations, tolerance, in_order=False)
+                iterations, tolerance, starts=np.arange(len(order)))
             first = {asked[i][1]: (qs[j], float(res[j])) for j, i in enumerate(order)}
+        tried = self._restarts(world, asked, order, first, targets, seeds, rng_seeds, restarts,
+                               rows, iterations, tolerance)
         out = []
         for i, (where, key) in enumerate(asked):
             found = self._answers.get(key) or self._missed.get(where)
@@ -87,10 +89,36 @@ class IkMemo:
                 # (the memo cleared at its limit since: asked afresh)
                 q, res = first[key] if key in first else _levenberg_marquardt(
                     world, targets[i], tries[0], rows, iterations, tolerance)
-                found = _finish(world, targets[i], tries, q, res, rows, iterations, tolerance)
+                found = _finish(world, targets[i], tries, q, res, rows, iterations, tolerance,
+                                tried.get(key))
                 self._keep(key, where, found, tolerance, restarts)
             out.append((found[0].copy(), found[1]))
         return out
+
+    @staticmethod
+    def _restarts(world, asked, order, first, targets, seeds, rng_seeds, restarts, rows,
+                  iterations, tolerance) -> dict:
+        """key -> (qs, residuals) of the other seeds of each question its first seed
+        missed, all run as one batch (a group per question). Only the first such
+        question of a target: asked in turn, a later one with another seed gets its
+        miss from the memo, or, where it succeeded, runs its own seeds then."""
+        leads, groups, rows_qs, aims = {}, [], [], []
+        for i in order:
+            where, key = asked[i]
+            if first[key][1] <= tolerance or not restarts or where in leads:
+                continue
+            tries = _seed_list(world, seeds[i], restarts, rng_seeds[i])[1:]
+            leads[where] = key
+            groups.append(len(rows_qs))
+            rows_qs += tries
+            aims += [targets[i]] * len(tries)
+        if not groups:
+            return {}
+        qs, res = _levenberg_marquardt_batch(world, np.array(aims), np.array(rows_qs), rows,
+                                             iterations, tolerance, starts=groups)
+        bounds = [*groups, len(rows_qs)]
+        return {key: (qs[a:b], res[a:b])
+                for key, a, b in zip(leads.values(), bounds, bounds[1:], strict=False)}
 
     def _keep(self, key, where, found, tolerance, restarts) -> None:
         if len(self._answers) + len(self._missed) >= self.limit:
@@ -134,13 +162,15 @@ def _seed_list(world, seed, restarts, rng_seed) -> list[np.ndarray]:
     return seeds
 
 
-def _finish(world, target, seeds, best_q, best_res, rows, iterations, tolerance):
+def _finish(world, target, seeds, best_q, best_res, rows, iterations, tolerance,
+            tried=None):
     """solve_ik's answer once its first seed gave (best_q, best_res): the other seeds
-    run (side by side) only where the first missed."""
+    run (side by side) only where the first missed; `tried`: their (qs, residuals),
+    already run."""
     if best_res <= tolerance or len(seeds) == 1:
         return best_q, float(best_res)
-    qs, res = _levenberg_marquardt_batch(world, target, np.array(seeds[1:]), rows,
-                                         iterations, tolerance)
+    qs, res = tried if tried is not None else _levenberg_marquardt_batch(
+        world, target, np.array(seeds[1:]), rows, iterations, tolerance)
     i = int(np.argmax(res <= tolerance)) if np.any(res <= tolerance) else int(np.argmin(res))
     if res[i] < best_res:
         best_q, best_res = qs[i], res[i]
@@ -186,15 +216,16 @@ def _levenberg_marquardt(world, target, q, rows, iterations, tolerance):
 
 
 def _levenberg_marquardt_batch(world, targets, qs, rows, iterations, tolerance,
-                               in_order: bool = True):
+                               starts=(0,)):
     """`_levenberg_marquardt` from each row of qs (S, n) at once: (final qs, residuals).
 
     `targets`: (S, 4, 4), each row's own, or (1, 4, 4), one for all. Each row keeps
-    its own damping and stall count and stops by the same rules. `in_order` (seeds
-    of one target, tried in turn): the batch stops once the first row in order that
+    its own damping and stall count and stops by the same rules. The rows come in
+    groups (`starts`: the first row of each; one group by default), each the seeds
+    of one question tried in turn: a group stops once its first row in order that
     reached `tolerance` has no row before it still running (its answer is then the
-    one a sequential run returns); otherwise (independent questions), or when no
-    row has reached it, once every row has stopped."""
+    one a sequential run returns), or when all its rows have stopped. Independent
+    questions: a group per row."""
     lower, upper = world.lower, world.upper
     chain, tool = world.chain, world._tool_index
     eye = np.eye(rows.stop - rows.start)
@@ -211,10 +242,15 @@ def _levenberg_marquardt_batch(world, targets, qs, rows, iterations, tolerance,
     damping = np.full(len(qs), 1e-2)
     stalled = np.zeros(len(qs), dtype=int)
     running = norm > tolerance
+    starts = np.asarray(starts, dtype=int)
+    group = np.repeat(np.arange(len(starts)), np.diff(np.append(starts, len(qs))))
+    index = np.arange(len(qs))
     for _ in range(iterations):
-        reached = np.flatnonzero(norm <= tolerance)
-        if not running.any() or (in_order and len(reached)
-                                 and not running[:reached[0]].any()):
+        # A group whose first success in order has no row before it running is done.
+        first = np.minimum.reduceat(np.where(norm <= tolerance, index, len(qs)), starts)
+        waiting = np.logical_or.reduceat(running & (index < first[group]), starts)
+        running &= ~((first < len(qs)) & ~waiting)[group]
+        if not running.any():
             break
         a = np.flatnonzero(running)
         jac = chain.tool_jacobian_batch(frames[a], tool)[:, rows]

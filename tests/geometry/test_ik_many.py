@@ -66,3 +66,39 @@ def test_guess_walk_draws_the_same_seeds_one_by_one_or_batched():
     for (q, res), (q1, res1) in zip(got, expected, strict=True):
         assert (res <= 1e-5) == (res1 <= 1e-5)
         np.testing.assert_allclose(q, q1, atol=1e-6)
+
+
+def test_grouped_batch_runs_each_group_as_alone():
+    """ik._levenberg_marquardt_batch with `starts`: the seeds of several questions in
+    one batch, each group stopping by its own first success in order, give what each
+    group run alone gives (reached from the same seed, the same configuration)."""
+    from tampcli.geometry import ik
+
+    with World(panda_scene(), visuals=False) as world:
+        rng = np.random.default_rng(5)
+        truths = [rng.uniform(world.lower, world.upper) for _ in range(4)]
+        targets = [world.tool_pose(q) for q in truths[:3]]
+        targets.append(transforms.pose(None, (1.5, 0.3, 0.4)))  # no seed reaches it
+        # seeds nearer the answer down the group: some succeed, from different rows;
+        # the first group's first seed is its answer (the group is done at once, and
+        # must not stop the others)
+        groups = [np.clip([q + rng.normal(0.0, sigma, world.n)
+                           for sigma in (2.0, 1.0, 0.5, 0.2, 0.05)], world.lower, world.upper)
+                  for q in truths]
+        groups[0][0] = truths[0]
+        rows = slice(0, 6)
+        alone = [ik._levenberg_marquardt_batch(world, t, g, rows, 200, 1e-5)
+                 for t, g in zip(targets, groups, strict=True)]
+        aims = np.array([t for t, g in zip(targets, groups, strict=True) for _ in g])
+        qs, res = ik._levenberg_marquardt_batch(world, aims, np.vstack(groups), rows, 200,
+                                                1e-5, starts=[0, 5, 10, 15])
+    for k, (q1, r1) in enumerate(alone):
+        q, r = qs[5 * k:5 * k + 5], res[5 * k:5 * k + 5]
+        ok1, ok = r1 <= 1e-5, r <= 1e-5
+        assert ok.any() == ok1.any()
+        if ok1.any():
+            i = int(np.argmax(ok1))
+            assert int(np.argmax(ok)) == i
+            np.testing.assert_allclose(q[i], q1[i], atol=1e-6)
+    assert sum(bool((r <= 1e-5).any()) for _, r in alone) >= 2
+    assert res[15:].min() > 0.5
