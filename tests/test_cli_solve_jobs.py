@@ -61,7 +61,7 @@ def test_a_worker_killed_mid_solve_is_reported_and_the_search_goes_on(cli, tmp_p
         for child in multiprocessing.active_children():
             child.kill()
 
-    timer = threading.Timer(4.0, kill_workers)
+    timer = threading.Timer(2.5, kill_workers)
     timer.start()
     try:
         run, out = _solve(cli, tmp_path, "arm-sort", "p01", "--jobs", "2", "-k", "3",

@@ -8,16 +8,17 @@ problems of its prefixes). With `jobs` N, N skeletons are solved at once: one
 here, between the books' turns, and N - 1 by the workers (worker processes).
 The main process takes the lowest rank not started (a problem of one skeleton
 is solved as the serial search solves it, no worker started), the workers the
-next ones. At most `2 * jobs` skeletons are out at once, so that a worker done
-early goes on with the next skeleton while an older, slower one holds up the
-books (results are taken in rank order).
+next ones. At most `2 * jobs` skeletons are out at once before a first solution,
+`WINDOW * jobs` after one, so that a worker done early goes on with the next
+skeletons while an older, slower one holds up the books (results are taken in
+rank order).
 
 Deterministic like the serial search: results are taken in rank order, one
 at a time, and the next skeleton is drawn right after each; so what the
 books hold when a skeleton is drawn (incumbent, learned obstructions,
 infeasible prefixes, keyframe warm starts) depends on ranks, not on which
 worker finished first. What differs from `--jobs 1`: a skeleton is drawn
-while up to `2 * jobs - 1` before it are still out, so it knows nothing of
+while up to `2 * jobs - 1` (`WINDOW * jobs - 1`) before it are still out, so it knows nothing of
 their results (no warm start from them, their learning not applied yet; learning
 is applied in rank order as results come back). Its keyframe bound is
 judged against the incumbent when it is taken, as the serial search would;
@@ -45,6 +46,16 @@ from tampcli.bnb.prefix_bounds import Relax
 from tampcli.bnb.skeleton_run import SkeletonJob, SkeletonRun, answer, run_skeleton
 from tampcli.bnb.values import BnBOptions, BnBResult, Diagnose, Evaluate, Event, SkeletonSource
 from tampcli.solution import SkeletonRecord
+
+# Skeletons out at once per job once there is an incumbent (2 before one: a skeleton
+# drawn then may fail, and teach those after it, or, with --first, be one too many).
+# arm-sort's slow skeletons are #8, #13 and #17 (2.5-4 s each, the others 0.1 s, pruned
+# at their reach against the incumbent): with 2 per job, #13 could not start before #8
+# was taken, and the three ran one after another (--jobs 2: 14.5 s, serial 16.4 s);
+# with 8, side by side with the cheap ones (12.9 s). What a larger window costs: a
+# skeleton is drawn knowing less of those before it (Workers.found tells it their paths
+# as they finish, and a learning source makes it wait: _waits).
+WINDOW = 8
 
 
 class Workers(Protocol):
@@ -107,7 +118,8 @@ class _ParallelSearch(_Search):
             if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
                 stop = "time"
                 break
-            if stop is None and len(out) < 2 * self.options.jobs and not self._waits(out):
+            window = (2 if self.incumbent is None else WINDOW) * self.options.jobs
+            if stop is None and len(out) < window and not self._waits(out):
                 stop = self._draw_next(iterator, out)
                 continue
             if not out or stop == "first":
@@ -116,7 +128,7 @@ class _ParallelSearch(_Search):
             if out[0].future is not None and out[0].future.done():
                 self._take(out.popleft())
                 continue
-            waiting = self._hand_out(out)
+            waiting = self._hand_out(out) or self._take_back(out)
             if waiting is not None:
                 self._run_here(waiting)
                 continue
@@ -163,6 +175,17 @@ class _ParallelSearch(_Search):
         for item in waiting[1:]:
             item.future = self.workers.submit(item.job)
         return waiting[0] if waiting else None
+
+    def _take_back(self, out: deque[_Out]) -> _Out | None:
+        """The lowest rank a worker holds but has not started, taken back (its Future
+        cancelled) for this process to solve, rather than wait idle while it sits
+        queued behind a slow one (arm-sort: #9 to #12 behind #8); None when there is
+        none."""
+        for item in out:
+            if item.future is not None and item.future.cancel():
+                item.future = None
+                return item
+        return None
 
     def _run_here(self, item: _Out) -> None:
         """Solve `item`'s skeleton in this process, now (its result as a done Future)."""

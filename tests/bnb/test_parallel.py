@@ -243,3 +243,36 @@ def test_this_process_solves_the_first_skeleton_and_a_worker_the_next():
     finally:
         threads.pool.shutdown(wait=False)
     assert where == {"a": True, "c": False}
+
+
+def test_after_a_first_solution_more_skeletons_are_out_at_once():
+    """WINDOW: once there is an incumbent, a slow skeleton no longer holds the others
+    back at 2 per job, nor do they wait queued behind it at a busy worker: the cheap
+    ones after it are solved while it runs (arm-sort's slow #8, #13 and #17 then run
+    side by side with the cheap ones)."""
+    plans = [(("c", "d"), 2.0), (("s",), 2.0)] + [((f"p{i}",), 3.0) for i in range(8)]
+    table = {(("c",), "path"): R("solved", 1.5), (("c",), "keyframes"): R("solved", 1.0)}
+    inner = table_evaluator(table)
+    started, slow = {}, []
+
+    def evaluate(ops, stage, warm, cutoff=None):
+        names = tuple(op.name for op in ops)
+        started.setdefault(names, time.perf_counter())
+        if names == ("s",) and stage == "keyframes":
+            slow.append(time.perf_counter())
+            time.sleep(0.5)
+            slow.append(time.perf_counter())
+        return inner(ops, stage, warm, cutoff)
+
+    threads = _Threads(evaluate, 2)
+    try:
+        result = parallel_branch_and_bound(Source(plans), threads, evaluate,
+                                           BnBOptions(jobs=2))
+    finally:
+        threads.pool.shutdown(wait=True)
+    assert result.status == "solved" and len(result.skeletons) == len(plans)
+    # ("s",) goes to the worker thread; this process takes every cheap one, the two
+    # queued behind it there taken back (_take_back). 2 per job: p0 to p2 only, until
+    # ("s",) is taken; without taking back, p2 to p7 (p0 and p1 wait behind it).
+    before = [n for n, t in started.items() if n[0].startswith("p") and t < slow[1]]
+    assert sorted(before) == [(f"p{i}",) for i in range(8)]
