@@ -29,7 +29,7 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
 # (label, domain, problem, skeletons): the default K (20), the whole solve as a user
-# runs it (arm-sort's took 17-19 s serially at b04b1ee; K was 6 while it took 30 s).
+# runs it (arm-sort's took 17-19 s serially at 49063e3; K was 6 while it took 30 s).
 PROBLEMS = {
     "arm-sort": ("domains/arm-sort/domain.pddl", "problems/arm-sort/p01.pddl", 20),
     "arm-kitchen": ("domains/arm-kitchen/domain.pddl", "problems/arm-kitchen/p01.pddl", 20),
