@@ -20,6 +20,11 @@ from tampcli.solution_kkt import KktCertificate
 
 FEASIBILITY = 1e-4  # m or rad: max violation still called feasible
 STALL_ITERATIONS = 25  # stop when the best point has not improved for this many iterations
+# ... or for this many evaluations: SLSQP's line search on collision rows that are only
+# piecewise smooth can take 6-20 evaluations an iteration and get nowhere (arm-sort #13:
+# 26 iterations, 170 evaluations, 1.4 s, no better than its start), where a solve that
+# progresses takes 1-1.5 an iteration.
+STALL_EVALUATIONS = 75
 STALL_PENALTY = 100.0  # weight of the violation (m, rad) against the cost (rad^2) in the merit
 STALL_GAIN = 1e-4  # relative improvement of the merit that counts as progress
 RESTART_VIOLATION = 1e-2  # m or rad: a point this close to feasible is worth a restart
@@ -112,6 +117,7 @@ class BestPoint:
         self.merit_x = x0.copy()
         self.merit_violation = np.inf
         self.progress = 0
+        self.progress_calls = 0  # ev.calls when the best point last improved
         self.iterations = 0
 
     def track(self, x) -> None:
@@ -121,7 +127,7 @@ class BestPoint:
         if key < self.key:
             bv, bc = self.key
             if key[0] < 0.99 * bv or (key[0] == 0 and (bv > 0 or key[1] < bc - 1e-6 * (1 + abs(bc)))):
-                self.progress = self.iterations
+                self.improved()
             self.x, self.key = np.array(x, copy=True), key
         # Iterates often approach a much cheaper optimum slightly outside the
         # feasibility tolerance (measured on arm-kitchen's keyframes: cost 0.33 at
@@ -132,11 +138,15 @@ class BestPoint:
                 merit < self.merit - STALL_GAIN * (1.0 + abs(self.merit)):
             self.merit = merit
             self.merit_x, self.merit_violation = np.array(x, copy=True), v
-            self.progress = self.iterations
+            self.improved()
+
+    def improved(self) -> None:
+        self.progress, self.progress_calls = self.iterations, self.ev.calls
 
     @property
     def stalled(self) -> bool:
-        return self.iterations - self.progress > STALL_ITERATIONS
+        return (self.iterations - self.progress > STALL_ITERATIONS
+                or self.ev.calls - self.progress_calls > STALL_EVALUATIONS)
 
 
 def outcome_at(ev: _Evaluator, x, reason, iterations: int, message: str, bounds) -> NlpOutcome:
@@ -199,7 +209,7 @@ def solve_nlp(evaluate, layout, x0, bounds, max_iterations: int, deadline: float
         # keyframes: cost 0.31 at a 0.1 degree tilt for 25 iterations, while the best
         # feasible point cost 1.30); a fresh start there, with a fresh quasi-Newton
         # Hessian, usually steps onto it.
-        best.progress = best.iterations
+        best.improved()
         reason, message = run(best.merit_x, max(max_iterations - best.iterations,
                                                 2 * STALL_ITERATIONS))
     # Whitened, the bounds are rows SLSQP meets within its tolerance: the answer is
