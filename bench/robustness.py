@@ -134,6 +134,12 @@ BLIND17 = {"p01": ("two tables at different heights (KUKA)", 4),
            "p04": ("action costs make a relay cheaper (KUKA, base turned)", 6),
            "p05": ("empty a hazard zone, negative forall goal (planar)", 6),
            "p06": ("a plank turned into a rack past posts", 4)}
+BLIND18 = {"p01": ("a shelf under a low board, no top grasp", 4),
+           "p02": ("rotate five cubes in a grid with one gap (KUKA)", 12),
+           "p03": ("a forced regrasp: side grasp under a board, top into a trench (xArm6)", 4),
+           "p04": ("a dead-end corridor, three crates to shuttle (planar)", 10),
+           "p05": ("clear a dock, push a wide crate into rails, stack on it (KUKA)", 5),
+           "p06": ("swap a cube and a can between post cages", 6)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -154,7 +160,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind6", BLIND6), ("blind7", BLIND7), ("blind8", BLIND8), ("blind9", BLIND9),
             ("blind10", BLIND10), ("blind11", BLIND11), ("blind12", BLIND12),
             ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("blind16", BLIND16),
-            ("blind17", BLIND17),
+            ("blind17", BLIND17), ("blind18", BLIND18),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
