@@ -328,8 +328,12 @@ class _Search(StageSteps):
             trial.heuristic_bound if heuristic else trial.proved_bound,
             "heuristic" if heuristic else "proved", trial.reached, trial.nlp_cost, total,
             self.clock() - trial.started, trial.reason, trial.kkt))
+        # The live line tells a proof (a region too small at any yaw...) from a local failure.
+        proof = trial.outcome == "infeasible" and getattr(trial.failed, "proved", False) \
+            and getattr(trial.failed, "status", None) != "limit"
         self.emit(Event("outcome", trial.rank, trial.names, trial.symbolic, stage=trial.reached,
-                        outcome=trial.outcome, cost=trial.nlp_cost, bound=total,
+                        outcome="proved infeasible" if proof else trial.outcome,
+                        cost=trial.nlp_cost, bound=total,
                         seconds=self.elapsed(), message=trial.reason))
 
     def _proved_bound(self, stop: str) -> float | None:

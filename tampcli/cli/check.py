@@ -83,7 +83,9 @@ def domain_summary(domain: ast.Domain) -> dict:
         "name": domain.name,
         "path": domain.path,
         "requirements": {"declared": list(report.declared), "used": list(report.used)},
-        "types": {t.name: list(t.types) for t in domain.types},
+        # A type under itself is read under object (pddl/check.py warns).
+        "types": {t.name: [p for p in t.types if p != t.name] or ["object"]
+                  for t in domain.types},
         "constants": len(domain.constants),
         "predicates": {p.name: len(p.params) for p in domain.predicates},
         "derived": sorted(derived),

@@ -139,11 +139,18 @@ class _DomainChecker:
             seen[typed.name] = typed
         for typed in self.domain.types:
             if typed.name in typed.types and typed.name != OBJECT:
+                # The names swept under it with it are what the author most likely did
+                # not mean (blind18: `crate place bay park - place` made crates places).
+                swept = [t.name for t in self.domain.types
+                         if t.name != typed.name and typed.name in t.types]
+                under = (f", and {', '.join(swept)} as "
+                         f"{'subtypes' if len(swept) > 1 else 'a subtype'} of {typed.name}"
+                         if swept else "")
                 self.warnings.append(
                     f"{located(self.domain.path, typed.span)}: type {typed.name} is declared "
                     f"a subtype of itself (in `{typed.name} ... - {typed.name}`, every name "
                     f"before the dash is a subtype of the type after it); it is read as a "
-                    f"subtype of object")
+                    f"subtype of object{under}")
             for parent in typed.types:
                 if parent != OBJECT and parent not in seen:
                     raise self.src.error(f"type {typed.name} has an undeclared parent type "

@@ -132,10 +132,14 @@ def test_an_object_larger_than_its_goal_region_makes_the_problem_unsolvable_at_o
     assert scene.count("size = [0.15, 0.15]") == 1
     (tmp_path / "p03.scene.toml").write_text(scene.replace("size = [0.15, 0.15]",
                                                            "size = [0.03, 0.15]"))
+    events = []
     solution = solve_paths(InputPaths(str(tmp_path / "domain.pddl"), str(tmp_path / "p03.pddl")),
-                           SolveOptions(BnBOptions(time_limit=60)))
+                           SolveOptions(BnBOptions(time_limit=60)), events.append)
     assert solution.status == "unsolvable", solution.reason
     assert "does not fit region goal (3.0 x 15.0 cm)" in solution.reason
+    # The live line says it is a proof, not a local failure (blind18's DOC_GAPS 9).
+    outcomes = [e.outcome for e in events if e.kind == "outcome"]
+    assert outcomes == ["proved infeasible"], outcomes
     assert "proved impossible in any skeleton" in solution.reason
     assert len(solution.skeletons) == 1
 

@@ -107,5 +107,7 @@ def test_a_type_declared_a_subtype_of_itself_is_warned_about(cli, tmp_path):
     warnings = json.loads(check.out)["warnings"]
     assert len(warnings) == 1 and warnings[0].startswith(f"{domain}:2:11: type thing is ")
     assert "subtype of itself" in warnings[0] and warnings[0] in plan.err
+    assert warnings[0].endswith("and zone, puck as subtypes of thing")
+    assert json.loads(check.out)["domain"]["types"]["thing"] == ["object"]
     solved = cli("plan", domain, problem, "--json")
     assert json.loads(solved.out)["status"] == "solved" and "(put p1 z1)" in solved.out
