@@ -44,7 +44,9 @@ class TrajectoryProblem:
     # optimize.hand.Hand: the fingers' opening throughout (`checker` holds them there);
     # open as lowered, narrowed to the grips chosen (hand.with_hand)
     hand: object = field(default=None, repr=False)
-    hands: dict = field(default_factory=dict, repr=False)  # hand.hand_for's, by (width, clearance)
+    # World measurements kept per skeleton: hand.hand_for's by (width, clearance), and
+    # world_state.reach_of's ball under "reach"
+    hands: dict = field(default_factory=dict, repr=False)
 
     @property
     def n(self) -> int:
