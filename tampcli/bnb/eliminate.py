@@ -54,13 +54,9 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
     while changed and time.perf_counter() < deadline:
         changed = False
         plan = tuple(result.best_plan)
-        for i in range(len(plan)):
+        for i, shorter in _candidates(plan, without_step):
             if time.perf_counter() >= deadline:
                 break
-            shorter = without_step(plan, i)
-            if shorter is None:
-                continue
-            shorter = tuple(shorter)
             names = tuple(op.name for op in shorter)
             known = result.judged.get(names)
             if known is not None and known.outcome == "infeasible" and (
@@ -75,8 +71,10 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
                 kkt = getattr(path, "kkt", None) or KktStages()
                 why += f"; solved as #{known.rank}, its path taken, not optimized again)"
             else:
-                stage, path, kkt = _last_stage(shorter, evaluate)
-                why += _again(known) + ")"
+                warm = _truncated(result.best, names, plan)
+                stage, path, kkt = _last_stage(shorter, evaluate, warm)
+                why += _again(known) + (
+                    "; its keyframes warm-started from the answer's" if warm else "") + ")"
             objective = None if path is None else float(path.cost) + symbolic_weight * symbolic
             added += 1
             rank = len(result.skeletons) + 1
@@ -146,11 +144,37 @@ def _again(known: Judged | None) -> str:
             "plan with an action fewer is taken whatever its objective")
 
 
-def _last_stage(ops, evaluate):
+def _candidates(plan: tuple, without_step) -> list[tuple[int, tuple]]:
+    """(i, the plan less action i and what then cannot apply) for each i it reaches the
+    goal, the answer's prefixes first, shortest first: an action after the goal's last
+    (the robot ending with a block in hand) is the common useless one, and a prefix's
+    keyframes start from the answer's own (`_truncated`): cheap to confirm, where a
+    search of the others can take a stage's whole time limit (blind19 p04: the answer
+    less its first action, 26 s, left no time to drop its last)."""
+    found = [(i, tuple(shorter)) for i in range(len(plan))
+             if (shorter := without_step(plan, i)) is not None]
+    return sorted(found, key=lambda c: (tuple(c[1]) != plan[:len(c[1])], len(c[1]), c[0]))
+
+
+def _truncated(best, names: tuple, plan: tuple):
+    """The answer's path result as the keyframe stage's warm start for `names`, its
+    prefix: its placements, grips and keyframes (the later ones unused), no
+    certificate; None when `names` is no prefix of the plan or the result carries no
+    keyframes."""
+    if names != tuple(op.name for op in plan[:len(names)]) \
+            or not getattr(best, "keyframes", None) or not dataclasses.is_dataclass(best):
+        return None
+    return dataclasses.replace(best, names=names, kkt=KktStages())
+
+
+def _last_stage(ops, evaluate, warm_keyframes=None):
     """(the last stage reached, its path-stage result or None when one failed, the KKT
-    certificates of the stages solved)."""
+    certificates of the stages solved). `warm_keyframes`: the keyframe stage's warm
+    start (its placements taken as they are), the final stage's result otherwise."""
     warm, kkt = None, KktStages()
     for stage in STAGES:
+        if stage == "keyframes" and warm_keyframes is not None:
+            warm = warm_keyframes
         warm = evaluate(ops, stage, warm)
         if warm.status != "solved":
             return stage, None, kkt
