@@ -3,7 +3,9 @@
 After the search, each action of the incumbent is dropped in turn, with every
 later action that is then inapplicable (`without_step`, symbolic); when the
 rest still reaches the goal, the shorter skeleton goes through the three
-stages like any other (a record of its own in the skeleton list). If its
+stages like any other (a record of its own in the skeleton list). The answer's
+prefixes come first (`_candidates`), their keyframe stage warm-started from the
+answer's own keyframes (`_truncated`). If its
 trajectory is feasible, it replaces the incumbent, whatever its objective: a
 plan with an action that can go is never the answer (the robot must not end
 holding a block it had no reason to touch). Passes repeat until nothing drops.
