@@ -4,8 +4,8 @@ After the search, each action of the incumbent is dropped in turn, with every
 later action that is then inapplicable (`without_step`, symbolic); when the
 rest still reaches the goal, the shorter skeleton goes through the three
 stages like any other (a record of its own in the skeleton list). The answer's
-prefixes come first (`_candidates`), their keyframe stage warm-started from the
-answer's own keyframes (`_truncated`). If its
+prefixes come first (`_candidates`), their path stage started from the answer's
+own keyframes and motions (`_truncated`), no keyframe NLP. If its
 trajectory is feasible, it replaces the incumbent, whatever its objective: a
 plan with an action that can go is never the answer (the robot must not end
 holding a block it had no reason to touch). Passes repeat until nothing drops.
@@ -76,7 +76,7 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
                 warm = _truncated(result.best, names, plan)
                 stage, path, kkt = _last_stage(shorter, evaluate, warm)
                 why += _again(known) + (
-                    "; its keyframes warm-started from the answer's" if warm else "") + ")"
+                    "; from the answer's keyframes and motions" if warm else "") + ")"
             objective = None if path is None else float(path.cost) + symbolic_weight * symbolic
             added += 1
             rank = len(result.skeletons) + 1
@@ -150,7 +150,7 @@ def _candidates(plan: tuple, without_step) -> list[tuple[int, tuple]]:
     """(i, the plan less action i and what then cannot apply) for each i it reaches the
     goal, the answer's prefixes first, shortest first: an action after the goal's last
     (the robot ending with a block in hand) is the common useless one, and a prefix's
-    keyframes start from the answer's own (`_truncated`): cheap to confirm, where a
+    path starts from the answer's own (`_truncated`): cheap to confirm, where a
     search of the others can take a stage's whole time limit (blind19 p04: the answer
     less its first action, 26 s, left no time to drop its last)."""
     found = [(i, tuple(shorter)) for i in range(len(plan))
@@ -159,9 +159,9 @@ def _candidates(plan: tuple, without_step) -> list[tuple[int, tuple]]:
 
 
 def _truncated(best, names: tuple, plan: tuple):
-    """The answer's path result as the keyframe stage's warm start for `names`, its
-    prefix: its placements, grips and keyframes (the later ones unused), no
-    certificate; None when `names` is no prefix of the plan or the result carries no
+    """The answer's path result as the path stage's warm start for `names`, its
+    prefix: its placements, grips, keyframes and motions (the stage cuts off the
+    later ones), no certificate; None when `names` is no prefix of the plan or the result carries no
     keyframes."""
     if names != tuple(op.name for op in plan[:len(names)]) \
             or not getattr(best, "keyframes", None) or not dataclasses.is_dataclass(best):
@@ -169,14 +169,17 @@ def _truncated(best, names: tuple, plan: tuple):
     return dataclasses.replace(best, names=names, kkt=KktStages())
 
 
-def _last_stage(ops, evaluate, warm_keyframes=None):
+def _last_stage(ops, evaluate, answer=None):
     """(the last stage reached, its path-stage result or None when one failed, the KKT
-    certificates of the stages solved). `warm_keyframes`: the keyframe stage's warm
-    start (its placements taken as they are), the final stage's result otherwise."""
+    certificates of the stages solved). `answer`: `_truncated`'s, for a prefix of the
+    answer: its path stage starts from the answer's keyframes, placements and motions
+    (optimize/path_stage.py), no keyframe NLP."""
     warm, kkt = None, KktStages()
     for stage in STAGES:
-        if stage == "keyframes" and warm_keyframes is not None:
-            warm = warm_keyframes
+        if answer is not None and stage == "keyframes":
+            continue
+        if answer is not None and stage == "path":
+            warm = answer
         warm = evaluate(ops, stage, warm)
         if warm.status != "solved":
             return stage, None, kkt

@@ -23,6 +23,7 @@ from tampcli.optimize.kkt import combined
 from tampcli.optimize.motion import solve_motion
 from tampcli.optimize.result import TrajectoryResult
 from tampcli.optimize.run import Run
+from tampcli.optimize.values import Keyframes
 
 # Path solves per skeleton that `verify` judges: each round after the first samples the
 # failing motions twice as finely (3, 7, 15 points a segment by default); a motion that
@@ -33,9 +34,12 @@ DETOUR = 2.0  # a motion sampled finer that costs this many times more is solved
 
 def path(run: Run, warm) -> TrajectoryResult:
     problem = run.problem
+    answer = None  # a longer skeleton's path whose first motions are this one's
     if (warm is not None and warm.solved and warm.stage in ("keyframes", "path")
             and warm.names == problem.names and warm.keyframes):
         kfr = warm
+        if len(warm.keyframes) > problem.n_keyframes:  # the answer's, cut (eliminate.py)
+            kfr = answer = _cut(warm, problem)
     else:
         run.stage = "keyframes"
         kfr = keyframes(run, warm)
@@ -48,7 +52,9 @@ def path(run: Run, warm) -> TrajectoryResult:
     faces = list(face_grips(problem, kfr))
     result = last = None
     run.in_the_way = ()
-    for grips in faces[:1] + [None] + faces[1:]:
+    # The answer's own grips first, its motions known to pass.
+    order = [None] + faces if answer is not None else faces[:1] + [None] + faces[1:]
+    for grips in order:
         if result is not None and (result.solved or result.status == "bounded"
                                    or time.perf_counter() > run.deadline
                                    or _robot_in_the_way(run)):
@@ -64,6 +70,18 @@ def path(run: Run, warm) -> TrajectoryResult:
             last = _relocated(run, warm, grips, start, path_through(run, start))
             result = last if result is None or last.solved else result
     return result
+
+
+def _cut(longer: TrajectoryResult, problem) -> TrajectoryResult:
+    """A longer skeleton's solved path as the warm start of its prefix `problem`: its
+    keyframes, grips and motions up to the prefix's last (action elimination dropping
+    the answer's last actions: its motions pass again as they are)."""
+    n, steps = problem.n_keyframes, len(problem.steps)
+    kf = longer.keyframes
+    return dataclasses.replace(
+        longer, keyframes=Keyframes(kf.q[:n], {s: t for s, t in kf.grip.items() if s < steps}),
+        choices={s: c for s, c in longer.choices.items() if s < steps},
+        motions={k: w for k, w in longer.motions.items() if k < n})
 
 
 def _robot_in_the_way(run: Run) -> bool:
@@ -155,7 +173,7 @@ def _path_through(run: Run, kfr) -> TrajectoryResult:
             # A motion sampled finer starts from its last solution (collision-free at
             # the coarser samples), not from scratch.
             out = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index),
-                               warm=waypoints.get(ctx.index))
+                               warm=waypoints.get(ctx.index, kfr.motions.get(ctx.index)))
             if attempt and out.status == "solved" and out.cost > DETOUR * costs[ctx.index] \
                     and time.perf_counter() < run.deadline:
                 # Sampled finer, the motion's warm start can only stay feasible by a long
@@ -194,7 +212,8 @@ def _path_through(run: Run, kfr) -> TrajectoryResult:
                                                                     len(traj)),
                             grasp_report=grasp_report(problem, choices, kf),
                             phases=phases, object_poses=poses, keyframes=kf, choices=choices,
-                            placements=kfr.placements, grasps=grasps)
+                            placements=kfr.placements, grasps=grasps,
+                            motions=dict(waypoints))
         # Judged with the fingers as the solution gives them (closed on what is held).
         problems = verify_mod.verify(problem, result, fingers=result.fingers)
         if not problems:

@@ -67,6 +67,9 @@ class TrajectoryResult:
     narrowed: bool = False
     placements: dict = field(default_factory=dict, repr=False)  # step -> values.Placement
     grasps: dict = field(default_factory=dict, repr=False)  # object -> 4x4 in tool frame
+    # Path stage, solved: each motion's interior waypoints (keyframe index -> (T_k - 1, n)),
+    # the warm start of the same motions in a prefix of this skeleton (bnb/eliminate.py)
+    motions: dict = field(default_factory=dict, repr=False)
 
     def __post_init__(self):
         if self.status not in STATUSES:

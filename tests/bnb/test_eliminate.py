@@ -3,6 +3,7 @@
 from dataclasses import dataclass
 
 import numpy as np
+import pytest
 
 from tampcli.bnb import BnBOptions, branch_and_bound
 from tampcli.bnb.eliminate import eliminate_useless
@@ -51,11 +52,12 @@ def test_it_stays_when_the_shorter_skeleton_is_infeasible():
     assert result.skeletons[-1].outcome == "infeasible"
 
 
-def test_a_trailing_action_is_tried_first_its_keyframes_warm_from_the_answer():
+def test_a_trailing_action_is_tried_first_its_path_from_the_answer():
     """blind19 p04: the answer's first action took the elimination's whole time (a path
     stage failing at its cap) before its last, useless one was tried. Prefixes of the
-    answer come first now, their keyframe stage warm-started from the answer's path
-    result (its keyframes and placements), the others after, from scratch."""
+    answer come first now, their path stage started from the answer's path result (its
+    keyframes, placements and motions: no keyframe NLP), the others after, from
+    scratch."""
     from tampcli.optimize.result import TrajectoryResult
     from tampcli.optimize.values import Keyframes
 
@@ -75,13 +77,49 @@ def test_a_trailing_action_is_tried_first_its_keyframes_warm_from_the_answer():
     result = branch_and_bound(source(plan), evaluate, BnBOptions())
     searched = len(calls)
     result = eliminate_useless(result, evaluate, drop, 0.1, float("inf"))
-    tried = [(names, stage, warm) for names, stage, warm in calls[searched:]]
-    assert [t[0] for t in tried][:3] == [plan[:3]] * 3  # the prefix, its three stages
-    keyframes_warm = tried[1][2]
-    assert tried[1][1] == "keyframes" and keyframes_warm.names == plan[:3]
-    assert keyframes_warm.keyframes is answer_keyframes
-    assert "warm-started from the answer's" in result.skeletons[-2].reason
-    # Then (pick b) goes too, from scratch: no prefix of the answer.
-    assert tried[3][0] == plan[1:3] and tried[4][1] == "keyframes"
-    assert tried[4][2].stage == "final"  # the final stage's result, as any skeleton's
+    tried = calls[searched:]
+    assert [(t[0], t[1]) for t in tried[:2]] == [(plan[:3], "final"), (plan[:3], "path")]
+    path_warm = tried[1][2]
+    assert path_warm.names == plan[:3] and path_warm.keyframes is answer_keyframes
+    assert "from the answer's keyframes and motions" in result.skeletons[-2].reason
+    # Then (pick b) goes too, through the three stages from scratch: no prefix.
+    assert [(t[0], t[1]) for t in tried[2:5]] == [(plan[1:3], s)
+                                                 for s in ("final", "keyframes", "path")]
+    assert tried[3][2].stage == "final"  # the final stage's result, as any skeleton's
     assert [op.name for op in result.best_plan] == ["(pick a)", "(place a)"]
+
+
+def test_a_real_prefix_passes_again_on_the_answers_own_motions():
+    """arm-pick-place p01 solved with a useless last pick: the 2-action prefix's path
+    stage, started from that answer (eliminate._truncated), runs no keyframe NLP and
+    takes the answer's motions as they are: the same waypoints, validated again."""
+    import time
+    from pathlib import Path
+
+    from tampcli.bnb.eliminate import _truncated
+    from tampcli.geometry.collision import CollisionChecker
+    from tampcli.geometry.world import World
+    from tampcli.pipeline import InputPaths, SolveOptions, Timers, _Evaluator, _Geometry, read_inputs
+
+    root = Path(__file__).resolve().parents[2]
+    inputs = read_inputs(InputPaths(str(root / "domains" / "arm-pick-place" / "domain.pddl"),
+                                    str(root / "problems" / "arm-pick-place" / "p01.pddl")),
+                         Timers())
+    with World(inputs.scene, visuals=False) as world:
+        evaluate = _Evaluator(inputs, _Geometry(world, CollisionChecker(world)), SolveOptions(),
+                              time.perf_counter() + 120)
+        ops = {op.name: op for op in inputs.task.operators}
+        plan = (ops["(pick a start)"], ops["(place a goal)"], ops["(pick a goal)"])
+        warm = None
+        for stage in ("final", "keyframes", "path"):
+            warm = evaluate(plan, stage, warm)
+        assert warm.status == "solved" and len(warm.motions) == len(warm.keyframes)
+        names = tuple(op.name for op in plan[:2])
+        prefix = evaluate(plan[:2], "path", _truncated(warm, names, plan))
+        assert prefix.status == "solved"
+        n = len(prefix.keyframes)
+        assert 0 < n < len(warm.keyframes)
+        for k in range(n):
+            np.testing.assert_allclose(prefix.keyframes.q[k], warm.keyframes.q[k])
+            np.testing.assert_allclose(prefix.motions[k], warm.motions[k], atol=1e-6)
+        assert prefix.cost == pytest.approx(sum(warm.phase_costs[:n]), rel=1e-6)
