@@ -99,7 +99,14 @@ def test_a_real_prefix_passes_again_on_the_answers_own_motions():
     from tampcli.bnb.eliminate import _truncated
     from tampcli.geometry.collision import CollisionChecker
     from tampcli.geometry.world import World
-    from tampcli.pipeline import InputPaths, SolveOptions, Timers, _Evaluator, _Geometry, read_inputs
+    from tampcli.pipeline import (
+        InputPaths,
+        SolveOptions,
+        Timers,
+        _Evaluator,
+        _Geometry,
+        read_inputs,
+    )
 
     root = Path(__file__).resolve().parents[2]
     inputs = read_inputs(InputPaths(str(root / "domains" / "arm-pick-place" / "domain.pddl"),

@@ -12,6 +12,7 @@ import pytest
 
 from tampcli.geometry import transforms
 from tampcli.geometry.world import World
+
 from .worlds import panda_scene
 
 
