@@ -155,7 +155,7 @@ def _candidates(plan: tuple, without_step) -> list[tuple[int, tuple]]:
     less its first action, 26 s, left no time to drop its last)."""
     found = [(i, tuple(shorter)) for i in range(len(plan))
              if (shorter := without_step(plan, i)) is not None]
-    return sorted(found, key=lambda c: (tuple(c[1]) != plan[:len(c[1])], len(c[1]), c[0]))
+    return sorted(found, key=lambda c: (c[1] != plan[:len(c[1])], len(c[1]), c[0]))
 
 
 def _truncated(best, names: tuple, plan: tuple):

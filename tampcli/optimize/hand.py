@@ -106,11 +106,11 @@ def narrows(problem, choices: dict) -> bool:
 
 
 def _cached(problem, width: float | None, clearance: float) -> Hand:
-    """hand_for, kept in the problem's `hands` (a bisection of World measurements)."""
+    """hand_for, kept in the problem's `memo` (a bisection of World measurements)."""
     key = (None if width is None else round(width, 6), clearance)
-    if key not in problem.hands:
-        problem.hands[key] = hand_for(problem.world, width, clearance)
-    return problem.hands[key]
+    if key not in problem.memo:
+        problem.memo[key] = hand_for(problem.world, width, clearance)
+    return problem.memo[key]
 
 
 def with_hand(problem, choices: dict):

@@ -46,7 +46,7 @@ class TrajectoryProblem:
     hand: object = field(default=None, repr=False)
     # World measurements kept per skeleton: hand.hand_for's by (width, clearance), and
     # world_state.reach_of's ball under "reach"
-    hands: dict = field(default_factory=dict, repr=False)
+    memo: dict = field(default_factory=dict, repr=False)
 
     @property
     def n(self) -> int:

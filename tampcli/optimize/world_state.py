@@ -44,7 +44,7 @@ def reach_of(problem) -> tuple[np.ndarray, float]:
         return base[:3, 3] + base[:3, 2] * PANDA_SHOULDER, PANDA_REACH
     # Sampled once per lowered skeleton (the final NLP asks at every evaluation: 300
     # forward kinematics each were 95 % of blind18 p05's final stage, 11 s), batched.
-    memo = problem.hands  # the problem's memo of World measurements, kept by replace
+    memo = problem.memo  # World measurements, kept by dataclasses.replace
     if "reach" not in memo:
         world = problem.world
         lo = np.where(np.isfinite(world.lower), world.lower, -math.pi)

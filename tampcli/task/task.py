@@ -144,25 +144,14 @@ class Task:
         facts = set(state)
         for heads, negs, counts, by_pos, unconditional in self._layers:
             counters = counts[:]
-            queue = []
-            # The facts true before this layer, taken before the unconditional heads
-            # join them: those are counted once, from the queue (counted here too, a
-            # rule using one fired a fact early: `plan` returned goals not reached).
-            known = [f for f in facts if f in by_pos]
+            # Every fact true before this layer, then each head as it comes true, is
+            # counted once, from the one queue (a head counted twice fires a rule early).
+            queue = [f for f in facts if f in by_pos]
             for i in unconditional:
                 neg = negs[i]
                 if (neg is None or neg.isdisjoint(facts)) and heads[i] not in facts:
                     facts.add(heads[i])
                     queue.append(heads[i])
-            for fact in known:
-                for i in by_pos[fact]:
-                    left = counters[i] - 1
-                    counters[i] = left
-                    if left == 0:
-                        neg = negs[i]
-                        if (neg is None or neg.isdisjoint(facts)) and heads[i] not in facts:
-                            facts.add(heads[i])
-                            queue.append(heads[i])
             while queue:
                 fact = queue.pop()
                 for i in by_pos.get(fact, ()):

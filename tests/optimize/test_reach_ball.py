@@ -21,7 +21,7 @@ ROOT = Path(__file__).resolve().parents[2]
 def test_the_reach_ball_is_the_farthest_sample_and_is_sampled_once(scene):
     scene = load_scene(ROOT / "problems" / f"{scene}.scene.toml")
     with World(scene, visuals=False) as world:
-        problem = types.SimpleNamespace(scene=scene, planar=False, world=world, hands={})
+        problem = types.SimpleNamespace(scene=scene, planar=False, world=world, memo={})
         centre, radius = reach_of(problem)
         # One configuration at a time, as a reader would write it.
         rng = np.random.default_rng(0)
