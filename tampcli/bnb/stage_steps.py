@@ -118,13 +118,14 @@ class StageSteps:
             self._unproved(trial)
         failed = getattr(result, "failed_actions", None)
         if stage == "path" and self.options.prefix_pruning and result.status == "infeasible" \
-                and failed is not None and failed < len(trial.names) \
-                and hasattr(self.skeletons, "forbid_prefix"):
+                and failed is not None and hasattr(self.skeletons, "forbid_prefix"):
             # A motion that found no path, with the sampler and every grip tried, fails
             # again after the same actions: the skeletons sharing them are not worth
             # their path stage (robust-planar p02: a blocker boxed in by two others,
-            # each order taking it first ~25 s). Heuristic, as the keyframe prefixes
-            # are: this skeleton's bound stays among the unproved.
+            # each order taking it first ~25 s), those that go on after its last action
+            # too (blind19 p04: the carry through a blocked door, then more, 30 s).
+            # Heuristic, as the keyframe prefixes are: this skeleton's bound stays
+            # among the unproved.
             prefix = trial.names[:failed]
             self.skeletons.forbid_prefix(prefix)
             self.stats["prefixes_forbidden"] += 1

@@ -202,14 +202,40 @@ def planar_segments(path: np.ndarray, T: int, radius: float) -> int:
 
 def _planar_route(run, ctx):
     """The planar robot's grid route (geometry/planar_route.py) of this motion, clear
-    by the options' margin where it can be, or None."""
+    by the options' margin where it can be, or None; each asked once per stage solve
+    (`passable` asks before the motion's solve does)."""
     problem = run.problem
-    opts = problem.options
-    m = problem.motions[ctx.index]
-    options = RouteOptions(clearance=opts.tight_margin, comfort=opts.margin + ROUTE_ROOM)
-    return planar_route(run.checker, ctx.q_a, ctx.q_b, problem.world.lower,
-                        problem.world.upper, body_poses=ctx.moved, held=held_spec(ctx.held),
-                        ignore=allowed_contacts(m), options=options)
+    key = (ctx.index, ctx.q_a.tobytes(), ctx.q_b.tobytes(),
+           None if ctx.held is None else (ctx.held.name, ctx.held.t),
+           tuple(sorted((n, p.tobytes()) for n, p in ctx.moved.items())))
+    if key not in run.routes:
+        opts = problem.options
+        m = problem.motions[ctx.index]
+        options = RouteOptions(clearance=opts.tight_margin, comfort=opts.margin + ROUTE_ROOM)
+        run.routes[key] = planar_route(
+            run.checker, ctx.q_a, ctx.q_b, problem.world.lower, problem.world.upper,
+            body_poses=ctx.moved, held=held_spec(ctx.held), ignore=allowed_contacts(m),
+            options=options)
+    return run.routes[key]
+
+
+def passable(run, ctx) -> bool:
+    """Whether the planar motion `ctx` has a start the NLP solves from at once: its
+    straight line within the margin of everything, or the grid route round what is
+    in the way. Where neither is, only the sampler may find a passage (a narrow one),
+    and a path of every grip tried may be there is none (blind19 p04: an 18 cm bar held
+    side-on, 14 cm with the disk, at a 12.4 cm doorway, 28 s of sampling)."""
+    opts = run.problem.options
+    _, violation = _straight_line(run, ctx, opts.waypoints, opts.interpolation_checks,
+                                  "a passage check")
+    return violation < opts.margin or _planar_route(run, ctx) is not None
+
+
+def held_blocks(run, ctx) -> bool:
+    """Whether what the planar robot holds in the motion `ctx` is what leaves it no
+    grid route: the robot alone has one. Only then may another grip pass (robust-planar
+    pen-k4: the disk alone between two rails, where no face of the box makes room)."""
+    return _planar_route(run, dataclasses.replace(ctx, held=None, grasp=None)) is not None
 
 
 def _margins(run, ctx, margin: float, tight: float):

@@ -20,7 +20,7 @@ from tampcli.optimize.keyframe_stage import (
     solve_placements,
 )
 from tampcli.optimize.kkt import combined
-from tampcli.optimize.motion import solve_motion
+from tampcli.optimize.motion import held_blocks, passable, solve_motion
 from tampcli.optimize.result import TrajectoryResult
 from tampcli.optimize.run import Run
 from tampcli.optimize.values import Keyframes
@@ -54,15 +54,17 @@ def path(run: Run, warm) -> TrajectoryResult:
     run.in_the_way = ()
     # The answer's own grips first, its motions known to pass.
     order = [None] + faces if answer is not None else faces[:1] + [None] + faces[1:]
-    for grips in order:
+    order = [(grips, kfr if grips is None else None) for grips in order]
+    if answer is None and problem.planar and faces:
+        order = _passable_first(run, warm, order, kfr.narrowed)
+    for grips, start in order:
         if result is not None and (result.solved or result.status == "bounded"
                                    or time.perf_counter() > run.deadline
                                    or _robot_in_the_way(run)):
             break
         if grips is not None and _before_the_grips(last, grips):
             continue
-        start = kfr
-        if grips is not None:
+        if start is None:
             run.stage = "keyframes"
             start = _face_keyframes(run, warm, grips, first=result is None, narrow=kfr.narrowed)
             run.stage = "path"
@@ -70,6 +72,47 @@ def path(run: Run, warm) -> TrajectoryResult:
             last = _relocated(run, warm, grips, start, path_through(run, start))
             result = last if result is None or last.solved else result
     return result
+
+
+SCREEN_SHARE = 0.2  # of the path stage's time left, at most, for _passable_first's look
+
+
+def _passable_first(run: Run, warm, order, narrow: bool):
+    """`order`, (grips, keyframes or None) pairs, with the first whose every carry is
+    passable (motion.passable: a straight line or a grid route) moved to the front,
+    the keyframes solved for the look kept. A grip whose carry has neither is tried
+    after: its sampler's long search (a fourth of the stage, then the look for a body
+    in the way) is for when no grip has a route (robust-planar p03: a doorway with
+    5 mm a side, which only the sampler finds). The look goes on past the first grip
+    only where what is held blocks its carry (motion.held_blocks: blind19 p04's
+    door blocked by a puck looks no further), the carry that stopped it looked at
+    first, and ends at SCREEN_SHARE of the time left (robust-planar pen-k4: its other
+    faces' keyframes, 3 s on a slow machine, left the relocation that solves it short
+    of time)."""
+    until = time.perf_counter() + SCREEN_SHARE * (run.deadline - time.perf_counter())
+    looked, stopped = [], None
+    for i, (grips, start) in enumerate(order):
+        if time.perf_counter() > until:
+            break
+        if start is None:
+            run.stage = "keyframes"
+            start = _face_keyframes(run, warm, grips, first=True, narrow=narrow)
+            run.stage = "path"
+        # A grip's keyframes unsolved here are solved again in turn, with retries.
+        looked.append((grips, start if start.solved else None))
+        if not start.solved:
+            continue
+        carries = sorted((ctx for ctx in walk(run.problem, start.keyframes, start.choices,
+                                              run.start) if ctx.held is not None),
+                         key=lambda ctx: ctx.index != stopped)
+        blocked = next((ctx for ctx in carries if not passable(run, ctx)), None)
+        if blocked is None:
+            return [looked[-1]] + looked[:-1] + order[i + 1:]
+        if stopped is None:
+            if not held_blocks(run, blocked):
+                break
+            stopped = blocked.index
+    return looked + order[len(looked):]
 
 
 def _cut(longer: TrajectoryResult, problem) -> TrajectoryResult:

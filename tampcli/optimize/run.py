@@ -34,6 +34,7 @@ class Run:
         self.in_the_way: tuple[tuple[str, str], ...] = ()
         self.anchors = None  # relocate.Relocation.anchors the keyframe NLP keeps to
         self.cutoff = None  # a trajectory cost the caller has no use for reaching (bounded)
+        self.routes: dict = {}  # the planar grid routes found, by motion (motion.py)
 
     def result(self, status: str, **fields) -> TrajectoryResult:
         fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")

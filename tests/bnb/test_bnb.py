@@ -180,6 +180,19 @@ def test_a_motion_that_failed_at_the_path_stage_forbids_the_actions_up_to_it():
     assert not res.optimal
 
 
+def test_a_failed_motion_into_the_last_action_forbids_the_skeletons_going_on_after_it():
+    """blind19 p04: (pick bar) (place bar goal) failed with the door blocked; the same
+    carry followed by more actions failed again after 30 s."""
+    plans = [(("x", "y"), 2), (("x", "y", "z"), 3), (("q", "x", "y"), 4)]
+    src = Source(plans)
+    ev = table_evaluator({(("x", "y"), "path"): R(
+        "infeasible", worst_constraint="motion 1 before (y): no path", failed_actions=2)})
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert src.forbidden == [("x", "y")]
+    assert ("x", "y", "z") not in src.drawn and ("q", "x", "y") in src.drawn
+    assert "(prefix x y failed)" in res.skeletons[0].reason
+
+
 def test_infeasible_prefix_prunes_every_skeleton_sharing_it():
     plans = [(("x", "y", "z"), 3), (("x", "y", "w"), 4), (("x", "v"), 5), (("q",), 6)]
     src = Source(plans)
