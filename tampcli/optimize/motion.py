@@ -86,7 +86,7 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     """
     problem = run.problem
     opts = problem.options
-    run.in_the_way = ()  # this motion's own finding only
+    run.in_the_way, run.blocked_alone = (), False  # this motion's own findings only
     line, line_violation = _straight_line(run, ctx, T, checks, label)
     if line_violation <= FEASIBILITY:
         return line
@@ -136,9 +136,18 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         run.obstruction = relocate.find(run, ctx, run.sampling(FIRST_SHARE))
         if run.obstruction is not None:
             return out
+    if sampled is None and problem.planar and (around := _route_around(run, ctx)) is not None:
+        # The plane's grid has a route only with the bodies at rest left out: one of them
+        # is in the way, and its name is what the search learns from; the long sampling
+        # below would most likely end the same (blind19 p04: the puck in the only
+        # doorway, 15 s of sampling, then the same body named).
+        run.in_the_way = relocate.in_the_way(run, ctx, run.sampling(FIRST_SHARE),
+                                             around.points)
+        run.blocked_alone = ctx.held is not None and not held_blocks(run, ctx)
+    if sampled is None and not run.in_the_way:
         # Its time ends early enough for the pass below (a fourth of what is left) on a
         # machine too slow for the checks budgeted: cut off at the stage's limit, a
-        # blocked motion would fail naming the wall, not the body (blind19 p04).
+        # blocked motion would fail naming the wall, not the body.
         sampled = _sampled_start(run, ctx, 1.0 - FIRST_SHARE, time.perf_counter()
                                  + (1.0 - FIRST_SHARE) * (run.deadline - time.perf_counter()))
         if sampled is None:
@@ -200,23 +209,32 @@ def planar_segments(path: np.ndarray, T: int, radius: float) -> int:
     return max(segments_for(path, T), wide)
 
 
-def _planar_route(run, ctx):
+def _planar_route(run, ctx, left_out: frozenset[str] = frozenset()):
     """The planar robot's grid route (geometry/planar_route.py) of this motion, clear
-    by the options' margin where it can be, or None; each asked once per stage solve
-    (`passable` asks before the motion's solve does)."""
+    by the options' margin where it can be, or None; the bodies `left_out` ignored.
+    Each asked once per stage solve (`passable` asks before the motion's solve does)."""
     problem = run.problem
     key = (ctx.index, ctx.q_a.tobytes(), ctx.q_b.tobytes(),
            None if ctx.held is None else (ctx.held.name, ctx.held.t),
-           tuple(sorted((n, p.tobytes()) for n, p in ctx.moved.items())))
+           tuple(sorted((n, p.tobytes()) for n, p in ctx.moved.items())), left_out)
     if key not in run.routes:
         opts = problem.options
         m = problem.motions[ctx.index]
         options = RouteOptions(clearance=opts.tight_margin, comfort=opts.margin + ROUTE_ROOM)
         run.routes[key] = planar_route(
             run.checker, ctx.q_a, ctx.q_b, problem.world.lower, problem.world.upper,
-            body_poses=ctx.moved, held=held_spec(ctx.held), ignore=allowed_contacts(m),
-            options=options)
+            body_poses=ctx.moved, held=held_spec(ctx.held),
+            ignore=allowed_contacts(m) | left_out, options=options)
     return run.routes[key]
+
+
+def _route_around(run, ctx):
+    """The grid route of the planar motion `ctx` with the bodies at rest left out
+    (relocate.resting), where it has none with them; else None."""
+    bodies = relocate.resting(run.problem, ctx)
+    if not bodies or _planar_route(run, ctx) is not None:
+        return None
+    return _planar_route(run, ctx, bodies)
 
 
 def passable(run, ctx) -> bool:

@@ -129,9 +129,12 @@ def _cut(longer: TrajectoryResult, problem) -> TrajectoryResult:
 
 def _robot_in_the_way(run: Run) -> bool:
     """Whether the last motion to fail was blocked by a body the skeleton never moved,
-    against the robot itself (relocate.in_the_way): no other face of what it carries
-    makes room there (blind15 p06: a crate in a corridor, 4 s a face)."""
-    return any(part.startswith("link:") for _, part in run.in_the_way)
+    against the robot itself (relocate.in_the_way), or against what it holds where the
+    planar robot alone has no route either (motion.py): no other face of what it
+    carries makes room there (blind15 p06: a crate in a corridor, 4 s a face; blind19
+    p04: a puck in the only doorway, 19 s for the other faces)."""
+    return bool(run.in_the_way) and (
+        run.blocked_alone or any(part.startswith("link:") for _, part in run.in_the_way))
 
 
 def _before_the_grips(failed, grips) -> bool:

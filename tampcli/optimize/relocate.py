@@ -84,12 +84,22 @@ def find(run, ctx, options: SamplingOptions) -> Obstruction | None:
     return Obstruction(ctx.index, path, blockers, held, dict(ctx.moved), ignore)
 
 
-def in_the_way(run, ctx, options: SamplingOptions) -> tuple[tuple[str, str], ...]:
+def resting(problem, ctx) -> frozenset[str]:
+    """The movable bodies still at their start pose in motion `ctx`, besides what it
+    holds and what it may touch: those in_the_way leaves out."""
+    held = held_spec(ctx.held)
+    ignore = allowed_contacts(problem.motions[ctx.index])
+    return frozenset(n for n, info in problem.bodies.items()
+                     if not info.fixed and n not in ctx.moved and n not in ignore
+                     and (held is None or n != held[0]))
+
+
+def in_the_way(run, ctx, options: SamplingOptions, path=None) -> tuple[tuple[str, str], ...]:
     """(body, the checker's name of the robot's part: "link:..." or "held:...") for
     each movable body still at its start pose that a
     path of motion `ctx` runs into (nearer than the sampler's clearance), the path
-    found with all of them left out; the deepest first. () when no such body stands
-    in the way or no path is found even so.
+    found with all of them left out (or `path`, one found so already); the deepest
+    first. () when no such body stands in the way or no path is found even so.
 
     A motion that finds no path where one exists with such a body out of the way is
     blocked by it: its failure names the body (motion.py), and the skeletons that move
@@ -99,19 +109,18 @@ def in_the_way(run, ctx, options: SamplingOptions) -> tuple[tuple[str, str], ...
     m = problem.motions[ctx.index]
     held = held_spec(ctx.held)
     ignore = allowed_contacts(m)
-    resting = frozenset(n for n, info in problem.bodies.items()
-                        if not info.fixed and n not in ctx.moved and n not in ignore
-                        and (held is None or n != held[0]))
-    if not resting:
+    bodies = resting(problem, ctx)
+    if not bodies:
         return ()
-    path = sampled_path(run.checker, ctx.q_a, ctx.q_b, problem.world.lower, problem.world.upper,
-                        body_poses=ctx.moved, held=held, ignore=ignore | resting,
-                        options=options)
+    if path is None:
+        path = sampled_path(run.checker, ctx.q_a, ctx.q_b, problem.world.lower,
+                            problem.world.upper, body_poses=ctx.moved, held=held,
+                            ignore=ignore | bodies, options=options)
     if path is None:
         return ()
     dense = resample(path, PATH_POINTS)
     found = []
-    for name in sorted(resting):
+    for name in sorted(bodies):
         distance, part = _nearest(run.checker, dense, ctx.moved, held, ignore, name)
         if distance < options.clearance:
             found.append((distance, name, part))

@@ -32,6 +32,9 @@ class Run:
         self.obstruction = None  # relocate.Obstruction of the last motion that failed
         # (body, robot part) that blocked the last motion to fail (relocate.in_the_way)
         self.in_the_way: tuple[tuple[str, str], ...] = ()
+        # Whether, in that motion, the planar robot alone had no grid route either: no
+        # other grip of what it holds makes room (path_stage._robot_in_the_way)
+        self.blocked_alone = False
         self.anchors = None  # relocate.Relocation.anchors the keyframe NLP keeps to
         self.cutoff = None  # a trajectory cost the caller has no use for reaching (bounded)
         self.routes: dict = {}  # the planar grid routes found, by motion (motion.py)

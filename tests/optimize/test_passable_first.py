@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+from tampcli.optimize import path_stage
 from tampcli.optimize.assemble import walk
 from tampcli.optimize.keyframe_stage import keyframes_with
 from tampcli.optimize.motion import held_blocks, passable
@@ -53,3 +54,15 @@ def test_the_path_stage_carries_the_bar_end_on(p04):
     assert out.status == "solved", out.worst_constraint
     bar = out.keyframes.grip[2]
     assert abs(math.sin(bar)) < 0.1  # an end face: 0 or 180 degrees
+
+
+def test_a_door_the_puck_blocks_names_the_puck_from_the_grid_and_tries_no_other_face():
+    """The bar carried before the puck is moved: the plane's grid has a route only with
+    the puck left out, so the failure names it without the long sampling pass, and as
+    the disk alone has no route either, no other face of the bar is tried."""
+    with lowered_folder(P04, "p04", ops("(pick bar bar-home)", "(place bar bar-goal)")) as p:
+        run = Run(p, "path")
+        out = path_stage.path(run, None)
+    assert out.status == "infeasible"
+    assert "vs puck: in the way of every path found" in out.worst_constraint
+    assert run.blocked_alone
