@@ -120,12 +120,13 @@ def _why_infeasible(problem, hull, budget: int, pushes: list[str]) -> str | None
     if math.isinf(solve_convex_qp(hull.qp()).value):
         return None
     if pushes and not math.isinf(solve_apart(hull.qp(), hull.aparts, budget)[0].value):
+        why = _no_face_why(problem, hull)
         if pushes[-1] == problem.steps[-1].name:
             # The last step of a shortest infeasible prefix is the push that fails: worded
             # as the NLPs word it, the skeleton source learns that its object must be
             # moved before it (from where it stands, no face leads there).
-            return f"{pushes[-1]}: motion not into the pushed face ({CONE})"
-        return CONE
+            return f"{pushes[-1]}: motion not into the pushed face ({why})"
+        return why
     alone = next((p for p in hull.aparts if blocks_alone(p, hull.box)), None)
     if alone is not None:
         # Worded as the NLPs word an overlap: the skeleton source learns the blocker.
@@ -133,6 +134,27 @@ def _why_infeasible(problem, hull, budget: int, pushes: list[str]) -> str | None
     if hull.aparts:
         return "what is put down cannot be kept apart from what rests there"
     return None
+
+
+LIMITS = ("no pushed face whose friction cone leads into the target can be pushed "
+          "with the robot within its joint limits")
+BODIES = ("no pushed face whose friction cone leads into the target can be pushed "
+          "clear of the bodies there")
+
+
+def _no_face_why(problem, hull) -> str:
+    """Why no face of the last push does, every face's QP being infeasible and the QP
+    with no face chosen feasible: its cone (no face leads into the target), the joint
+    limits (one does, but the robot cannot stand at it: blind20 p03, a crate 1 cm from
+    the bench's edge, pushed away from it), or the bodies there."""
+    step = next(s for s in reversed(problem.steps) if s.kind.relax_faces(problem, s))
+    faces = hull.open_faces(step, step.kind.relax_faces(problem, step))
+    if not faces:
+        return CONE
+    if all(math.isinf(solve_convex_qp(Builder(problem, {step.index: f}).qp()).value)
+           for f in faces):
+        return LIMITS
+    return BODIES
 
 
 def _polygon(support) -> list[tuple[np.ndarray, float]]:

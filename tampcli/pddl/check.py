@@ -110,6 +110,10 @@ class _DomainChecker:
             self._duplicate(self.functions, function.name, function.span, "function")
             self._params(function.params, f"function {function.name}", unique=False)
             self.functions[function.name] = function
+        # The axioms first: a derived predicate left out of :predicates is named where it
+        # is derived, not as an undeclared predicate where an action uses it (blind20).
+        for axiom in d.axioms:
+            self._axiom(axiom)
         actions: dict[str, ast.Action] = {}
         for action in d.actions:
             self._duplicate(actions, action.name, action.span, "action")
@@ -117,8 +121,6 @@ class _DomainChecker:
             scope = self._params(action.params, f"action {action.name}")
             self.formula(action.precondition, scope, self.constants, self.src)
             self._effect(action.effect, scope)
-        for axiom in d.axioms:
-            self._axiom(axiom)
 
     # ---- declarations
 

@@ -399,6 +399,36 @@ def test_an_oblong_object_starts_turned_where_only_that_fits():
     assert _fitting_yaw(bar, 0.3, SimpleNamespace(size=(0.05, 0.05))) == 0.3  # none fits
 
 
+def test_an_object_that_fits_only_across_a_diagonal_starts_in_the_middle_of_its_window():
+    """blind20 p01: a 15 x 3 cm pen fits a 13.6 cm square case between about 41.7 and
+    48.3 degrees (either diagonal); from 0 the final NLP ended in the case's rim."""
+    from types import SimpleNamespace
+
+    from tampcli.optimize.bodies import rectangle_fits
+    from tampcli.optimize.final_starts import _fitting_yaw
+
+    pen = SimpleNamespace(disk=False, half=(0.075, 0.015, 0.015))
+    case = SimpleNamespace(size=(0.136, 0.136))
+    assert rectangle_fits(0.15, 0.03, 0.136, 0.136) and not rectangle_fits(0.15, 0.03, 0.12, 0.12)
+    for start, middle in ((0.0, 45.0), (-0.2, -45.0), (2.0, 135.0), (3.0, 135.0), (6.5, 405.0)):
+        assert math.degrees(_fitting_yaw(pen, start, case)) == pytest.approx(middle, abs=0.2)
+
+
+def test_the_pen_goes_into_its_case_turned_45_degrees():
+    """The final stage of blind20 p01's pen into its rimmed case, solved."""
+    from tampcli.optimize.solve import solve
+
+    from .helpers import lowered_folder
+
+    folder = Path(__file__).resolve().parents[2] / "problems" / "blind20" / "p01"
+    with lowered_folder(folder, "p01", ops("(pick pen pen-home)", "(place pen case)")) as problem:
+        out = solve(problem, "final")
+    assert out.status == "solved", out.worst_constraint
+    (yaw,) = [p.yaw for p in out.placements.values()]
+    turn = math.degrees(yaw) % 90.0
+    assert 41.5 < turn < 48.5
+
+
 def test_a_fixed_body_clear_of_the_region_gets_no_apart_row():
     """stages._clear_of_region: the row is left out only where every footprint inside
     the region is C.GAP apart from the body's footprint (its bounding circle), so the

@@ -178,3 +178,20 @@ def test_a_line_meets_a_wall_across_it_and_misses_one_beside_it():
     assert line_meets((0.0, 0.0), across, post, 0.01)
     assert not line_meets((0.0, 0.3), Region("r", "floor", (1.0, 0.3), (0.1, 0.1)), post,
                           0.1)
+
+
+def test_a_push_the_joint_limits_forbid_is_refused_naming_them():
+    """blind20 p03: crate a stands 1 cm from the bench's south edge and its goal lies
+    north: the south face's cone leads there, but the disk's axis would stand 4 cm
+    past the edge. Refused with a proof, naming the limits, not the cone."""
+    from pathlib import Path
+
+    from tampcli.optimize import relaxed
+
+    from .helpers import lowered_folder
+
+    folder = Path(__file__).resolve().parents[2] / "problems" / "blind20" / "p03"
+    with lowered_folder(folder, "p03", ops("(push a a-home goal-a)")) as problem:
+        out = relaxed_bound(problem)
+    assert out.kind == "proved" and math.isinf(out.value)
+    assert out.why == f"(push a a-home goal-a): motion not into the pushed face ({relaxed.LIMITS})"

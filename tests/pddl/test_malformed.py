@@ -54,6 +54,8 @@ CATALOG = [
     ("sem-wrong-type-constant.pddl", "semantic", 8, 20, "table is of type place, expected block"),
     ("sem-wrong-type-variable.pddl", "semantic", 7, 23, "?p is of type place, expected truck"),
     ("sem-derived-undeclared.pddl", "semantic", 4, 3, "above is not declared in :predicates"),
+    # Used by an action before it is derived: named where it is derived (blind20).
+    ("sem-derived-undeclared-used.pddl", "semantic", 6, 3, "above is not declared in :predicates"),
     ("sem-derived-wrong-type.pddl", "semantic", 5, 31, "?y is of type place, declared as block"),
     ("sem-effect-on-derived.pddl", "semantic", 7, 14, "cannot be changed by an effect"),
     ("sem-increase-nonstatic.pddl", "semantic", 7, 46, "a number or a static function"),

@@ -1,0 +1,6 @@
+(define (domain d)
+  (:requirements :derived-predicates :negative-preconditions)
+  (:predicates (on ?x ?y))
+  (:action a :parameters (?x ?y)
+    :precondition (not (above ?x ?y)) :effect (on ?x ?y))
+  (:derived (above ?x ?y) (on ?x ?y)))
