@@ -217,6 +217,22 @@ def test_no_solution_explains_why_and_is_a_limit_unless_proved():
                             BnBOptions()).status == "unsolvable"
 
 
+def test_no_solution_names_the_failure_most_skeletons_ended_on():
+    """blind20 p01: 318 of 320 skeletons failed placing the pen into its case; the reason
+    named the first three and "... and 317 more"."""
+    plans = [(("x",), 1), (("y",), 2)] + [((f"p{i}", "put"), 3 + i) for i in range(5)]
+    table = {(("x",), "final"): R("infeasible", worst_constraint="out of reach"),
+             (("y",), "final"): R("infeasible", worst_constraint="too small")}
+    for i in range(5):
+        table[((f"p{i}", "put"), "final")] = R(
+            "infeasible", worst_constraint=f"(put): overlaps rim by 0.{8 - i} cm")
+    res = branch_and_bound(Source(plans), table_evaluator(table), BnBOptions())
+    assert "... and 4 more" in res.reason
+    assert res.reason.endswith(
+        "the commonest failure, 5 of 7 skeletons: final stage infeasible: (put): overlaps "
+        "rim by 0.8 cm")
+
+
 def test_skeleton_limit():
     src = Source([((f"a{i}",), i) for i in range(10)])
     ev = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(10)})
