@@ -152,6 +152,12 @@ BLIND20 = {"p01": ("a pen into a case only along its diagonal, a ruler to a tray
            "p04": ("a bar round the corner of an L-shaped corridor (planar)", 2),
            "p05": ("the back cube of a two-deep channel (KUKA)", 4),
            "p06": ("a cube and a ball on small posts, then park the arm", 5)}
+BLIND21 = {"p01": ("a bar along a board turned 35 degrees, a sphere (domain constant)", 4),
+           "p02": ("a thin wafer off a low shelf under a hood (KUKA)", 2),
+           "p03": ("three pucks through one door, the order forced (planar)", 6),
+           "p04": ("a can on a block on a drum, per-object costs (xArm6)", 4),
+           "p05": ("a cube onto a tall stack at the reach limit (IPC blocks world)", 2),
+           "p06": ("a crate pushed along a kerb into a corner, a cube in the way (KUKA)", 3)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -173,7 +179,8 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind10", BLIND10), ("blind11", BLIND11), ("blind12", BLIND12),
             ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("blind16", BLIND16),
             ("blind17", BLIND17), ("blind18", BLIND18), ("blind19", BLIND19),
-            ("blind20", BLIND20), ("gen1", GEN1))
+            ("blind20", BLIND20), ("blind21", BLIND21),
+            ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
     return rows

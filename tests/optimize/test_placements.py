@@ -456,3 +456,15 @@ def test_a_fixed_body_clear_of_the_region_gets_no_apart_row():
         C.apart(rows, "s", planar_pose("p", x, y, 0.02, yaw), BOX,
                 planar_pose("o", 0.7, 0.0, 0.1, 0.6), post, "post")
         assert rows.values[0][0] >= 0.0
+
+
+def test_an_object_put_on_itself_is_impossible_with_every_such_action():
+    """blind21 p05: the IPC blocks world's `stack` lets a block onto itself; the refusal
+    read `the scene has no region or body 'c1'`."""
+    from .helpers import lowered_folder
+
+    folder = Path(__file__).resolve().parents[2] / "problems" / "blind21" / "p05"
+    with lowered_folder(folder, "p05", ops("(unstack c2 c1)", "(stack c2 c2)")) as problem:
+        assert problem.error == "(stack c2 c2): c2 cannot be put on itself"
+        assert problem.error_proved
+        assert problem.impossible == ("stack", "c2", ("on", "c2"))

@@ -16,7 +16,7 @@ from tampcli.optimize import constraints as C
 from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
 from tampcli.optimize.kinds.base import ModeKind
-from tampcli.optimize.skeleton import LoweringError, Step
+from tampcli.optimize.skeleton import ImpossibleAction, LoweringError, Step
 from tampcli.optimize.stability import unstable
 
 
@@ -33,6 +33,11 @@ class Place(ModeKind):
         if lo.held != obj:
             raise LoweringError(f"{label}: {obj} is not held"
                                 + (f" (holding {lo.held})" if lo.held else ""))
+        if target == obj:
+            # A blocks-world `stack` lets a block onto itself (blind21 p05): refused with a
+            # proof, every such ground action with it (bnb/lessons.py).
+            raise ImpossibleAction(f"{label}: {obj} cannot be put on itself", op.action, obj,
+                                   ("on", obj))
         if target in lo.regions:
             body = lo.regions[target].on
             lo.fits(label, op, obj, target, "on")
