@@ -70,20 +70,10 @@ def _fitting_yaw(info, yaw: float, region) -> float:
     shift = int(np.argmin(ok))  # a turn that does not fit: no window wraps past it
     ok, turns = np.roll(ok, -shift), np.roll(turns, -shift)
     turns = np.unwrap(turns, period=math.pi)
-    best, i = None, 0
-    while i < len(ok):
-        if not ok[i]:
-            i += 1
-            continue
-        j = i
-        while j + 1 < len(ok) and ok[j + 1]:
-            j += 1
-        middle = 0.5 * (turns[i] + turns[j])
-        middle -= math.pi * round((middle - yaw) / math.pi)  # the nearest equivalent
-        if best is None or abs(middle - yaw) < abs(best - yaw):
-            best = middle
-        i = j + 1
-    return float(best)
+    edges = np.flatnonzero(np.diff(np.concatenate(([0], ok.astype(int), [0]))))
+    middles = 0.5 * (turns[edges[::2]] + turns[edges[1::2] - 1])
+    middles -= math.pi * np.round((middles - yaw) / math.pi)  # the nearest equivalents
+    return float(middles[np.argmin(np.abs(middles - yaw))])
 
 
 def _robot_xy(problem) -> np.ndarray:

@@ -43,12 +43,13 @@ from dataclasses import dataclass
 import numpy as np
 
 from tampcli.optimize.bodies import TOUCH_TOLERANCE
-from tampcli.optimize.convex_qp import ConvexQP, solve_convex_qp
+from tampcli.optimize.convex_qp import ConvexQP
 from tampcli.optimize.kinds.push_check import PENETRATION, SLACK, STILL
 from tampcli.optimize.kinds.push_contact import PUSH_FRICTION, face_of
 from tampcli.optimize.problem import TrajectoryProblem
 from tampcli.optimize.push_reach import cone_slack, footprint_extent, open_faces, rot
-from tampcli.optimize.relaxed_apart import Apart, apart, blocks_alone, solve_apart
+from tampcli.optimize.relaxed_apart import Apart, apart, solve_apart
+from tampcli.optimize.relaxed_why import cone_why, why_infeasible
 from tampcli.optimize.verify import INSIDE, LIMIT, RIGID
 from tampcli.optimize.verify import STILL as STILL_OBJECT
 
@@ -83,7 +84,7 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
     choices = [(i, hull.open_faces(problem.steps[i], faces)) for i, faces in choices]
     closed = next((i for i, faces in choices if not faces), None)
     if closed is not None:
-        return RelaxedBound(math.inf, "proved", 0, _cone_why(problem, closed))
+        return RelaxedBound(math.inf, "proved", 0, cone_why(problem, closed))
     assignments = [{}]
     if math.prod(len(faces) for _, faces in choices) <= MAX_FACE_ASSIGNMENTS:
         assignments = [dict(zip([i for i, _ in choices], pick, strict=True))
@@ -95,66 +96,9 @@ def relaxed_bound(problem: TrajectoryProblem) -> RelaxedBound | None:
         out, solved, _ = solve_apart(builder.qp(), builder.aparts, budget)
         best, proved, qps = min(best, out.value), proved and out.proved, qps + solved
     kind = "proved" if proved else "heuristic"
-    why = _why_infeasible(problem, hull, budget, pushes) if math.isinf(best) else None
+    why = why_infeasible(problem, hull, budget, pushes,
+                         lambda faces: Builder(problem, faces)) if math.isinf(best) else None
     return RelaxedBound(float(max(best, 0.0)), kind, qps, why)
-
-
-CONE = "no pushed face's friction cone leads into the target (a drag or a pull)"
-
-
-def _cone_why(problem, index: int) -> str:
-    """Words for a push none of whose faces' cones leads into its target: worded as
-    the NLPs word it when it is the prefix's last step (the skeleton source learns
-    that its object must be moved before it: from where it stands, no face leads
-    there)."""
-    name = problem.steps[index].name
-    if name == problem.steps[-1].name:
-        return f"{name}: motion not into the pushed face ({CONE})"
-    return f"{CONE}: {name}"
-
-
-def _why_infeasible(problem, hull, budget: int, pushes: list[str]) -> str | None:
-    """The part of the relaxation that makes it infeasible, when one alone does.
-    `hull`: the Builder with no face chosen (no friction cone); `pushes`: the names
-    of the pushing steps (with faces to choose)."""
-    if math.isinf(solve_convex_qp(hull.qp()).value):
-        return None
-    if pushes and not math.isinf(solve_apart(hull.qp(), hull.aparts, budget)[0].value):
-        why = _no_face_why(problem, hull)
-        if pushes[-1] == problem.steps[-1].name:
-            # The last step of a shortest infeasible prefix is the push that fails: worded
-            # as the NLPs word it, the skeleton source learns that its object must be
-            # moved before it (from where it stands, no face leads there).
-            return f"{pushes[-1]}: motion not into the pushed face ({why})"
-        return why
-    alone = next((p for p in hull.aparts if blocks_alone(p, hull.box)), None)
-    if alone is not None:
-        # Worded as the NLPs word an overlap: the skeleton source learns the blocker.
-        return f"{alone.label} wherever it is put down"
-    if hull.aparts:
-        return "what is put down cannot be kept apart from what rests there"
-    return None
-
-
-LIMITS = ("no pushed face whose friction cone leads into the target can be pushed "
-          "with the robot within its joint limits")
-BODIES = ("no pushed face whose friction cone leads into the target can be pushed "
-          "clear of the bodies there")
-
-
-def _no_face_why(problem, hull) -> str:
-    """Why no face of the last push does, every face's QP being infeasible and the QP
-    with no face chosen feasible: its cone (no face leads into the target), the joint
-    limits (one does, but the robot cannot stand at it: blind20 p03, a crate 1 cm from
-    the bench's edge, pushed away from it), or the bodies there."""
-    step = next(s for s in reversed(problem.steps) if s.kind.relax_faces(problem, s))
-    faces = hull.open_faces(step, step.kind.relax_faces(problem, step))
-    if not faces:
-        return CONE
-    if all(math.isinf(solve_convex_qp(Builder(problem, {step.index: f}).qp()).value)
-           for f in faces):
-        return LIMITS
-    return BODIES
 
 
 def _polygon(support) -> list[tuple[np.ndarray, float]]:

@@ -186,7 +186,7 @@ def test_a_push_the_joint_limits_forbid_is_refused_naming_them():
     past the edge. Refused with a proof, naming the limits, not the cone."""
     from pathlib import Path
 
-    from tampcli.optimize import relaxed
+    from tampcli.optimize import relaxed_why
 
     from .helpers import lowered_folder
 
@@ -194,4 +194,4 @@ def test_a_push_the_joint_limits_forbid_is_refused_naming_them():
     with lowered_folder(folder, "p03", ops("(push a a-home goal-a)")) as problem:
         out = relaxed_bound(problem)
     assert out.kind == "proved" and math.isinf(out.value)
-    assert out.why == f"(push a a-home goal-a): motion not into the pushed face ({relaxed.LIMITS})"
+    assert out.why == f"(push a a-home goal-a): motion not into the pushed face ({relaxed_why.LIMITS})"
