@@ -59,15 +59,20 @@ def push_entry(problem, step, choice, t) -> dict:
     `-x`, `+y`, ...: the face pushed, the object moving away from it; a cylinder's
     direction of push in its own frame, degrees), the pusher (`rim` for the planar
     disk; an arm's hand `down`, the open fingers' side on the face, or `level`, its
-    fingertips on it) and the contact's offset from the face's middle along it (m)."""
+    fingertips on it), for an arm which `fingers` touch (`both`, or `one` alone on a
+    face narrower than their spread) and the contact's offset from the face's middle
+    along it (m)."""
     angle = choice.face if choice.face is not None else 0.0
     if problem.bodies[step.obj].disk:
         face = f"{math.degrees(angle):.0f} deg"
     else:
         face = _BOX_FACES[round(angle / (0.5 * math.pi)) % 4]
     pusher = "rim" if problem.planar else ("level" if choice.level else "down")
-    return {"action": step.name, "object": step.obj, "family": step.kind.name, "face": face,
-            "pusher": pusher, "offset": None if t is None else float(t)}
+    entry = {"action": step.name, "object": step.obj, "family": step.kind.name, "face": face,
+             "pusher": pusher, "offset": None if t is None else float(t)}
+    if not problem.planar:
+        entry["fingers"] = "one" if choice.finger else "both"
+    return entry
 
 
 def grasp_words(entry: dict) -> str:
@@ -76,8 +81,13 @@ def grasp_words(entry: dict) -> str:
     -x face, 0.4 cm off its middle`."""
     head = f"{entry['action']}: {entry.get('family', '?')}"
     if "pusher" in entry:
-        pusher = {"rim": "the disk's rim", "down": "the hand down, its fingers' side",
-                  "level": "the hand level, its fingertips"}.get(entry.get("pusher"), "?")
+        one = entry.get("fingers") == "one"
+        pusher = {"rim": "the disk's rim",
+                  "down": "the hand down, " + ("one finger's side" if one
+                                               else "its fingers' side"),
+                  "level": "the hand level, " + ("one fingertip" if one
+                                                 else "its fingertips")
+                  }.get(entry.get("pusher"), "?")
         words = f"{entry['action']}: {pusher} on {entry['object']}'s {entry.get('face')} face"
         offset = entry.get("offset")
         return words + ("" if offset is None else f", {100 * offset:.1f} cm off its middle")

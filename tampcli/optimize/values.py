@@ -27,6 +27,9 @@ class GripChoice:
     face: float | None = None  # push: the contacted face (push_contact.Face.angle)
     reach: float | None = None  # push (arm): tool origin to the object's centre, measured
     level: bool = False  # push (arm): the hand level, its fingertips against the face
+    # push (arm): 0, both open fingers on the face; +1 / -1, only the one on the tool's
+    # +y / -y side, centred on the contact (a face narrower than the fingers' spread)
+    finger: int = 0
 
 
 NO_CHOICE = GripChoice()

@@ -79,6 +79,9 @@ def test_tool_frame_follows_the_pandas_convention(arm):
     name, world = arm
     assert 0.005 <= world.fingertip_depth <= 0.015, name
     assert 0.075 <= world.gripper_opening <= 0.095, name
+    inner, outer = world.finger_span  # the open fingers' near and far sides from the axis
+    assert inner == pytest.approx(world.gripper_opening / 2), name
+    assert inner + 0.01 <= outer <= inner + 0.04, name  # fingers 1 to 4 cm thick
     tool = world.tool_pose(world.start)
     flange = transforms.pose_inverse(tool) @ world.fk(world.start)[ARMS[name].tool_link]
     assert flange[2, 3] <= 1e-9 and np.hypot(*flange[:2, 3]) < 1e-6, name

@@ -166,15 +166,18 @@ def aabb(pb, client: int, body: int, links=None) -> tuple[np.ndarray, np.ndarray
 
 def gripper_size(pb, client: int, body: int, fingers, chain, tool: int, q,
                  reach: float = 0.02, values: dict | None = None
-                 ) -> tuple[float, float] | None:
-    """(opening, fingertip depth) of open fingers at configuration q, in the tool frame
-    (chain link `tool`), from the exact support of their collision shapes (margins
-    included: the solids PyBullet sees). `values`: chain link index -> its finger
-    joint's value, for fingers not open.
+                 ) -> tuple[float, float, tuple[float, float]] | None:
+    """(opening, fingertip depth, span) of open fingers at configuration q, in the
+    tool frame (chain link `tool`), from the exact support of their collision shapes
+    (margins included: the solids PyBullet sees). `values`: chain link index -> its
+    finger joint's value, for fingers not open.
 
     Opening: the gap along y between the finger parts on either side that
     come within `reach` of the tool origin's height (linkage bars higher up
     are not what closes on an object). Depth: how far they reach along z.
+    Span: (inner, outer) distance along y from the tool's axis to those finger
+    parts' near and far sides, the mean of the two sides: where a finger's
+    side stands when the fingers, spread along a face, push it.
     """
     if fingers is None:
         return None
@@ -185,7 +188,8 @@ def gripper_size(pb, client: int, body: int, fingers, chain, tool: int, q,
         frames = chain.fk_list(q)
     to_tool = transforms.pose_inverse(frames[tool])
     by_pb = {link.pb_index: i for i, link in enumerate(chain.links)}
-    depth, left, right = -np.inf, np.inf, np.inf
+    depth = -np.inf
+    inner, outer = [np.inf, np.inf], [0.0, 0.0]  # the +y side's, the -y side's
     y, z = np.array([0.0, 1.0, 0.0]), np.array([0.0, 0.0, 1.0])
     for link in fingers.links:
         for shape in link_shapes(pb, client, body, link):
@@ -200,11 +204,13 @@ def gripper_size(pb, client: int, body: int, fingers, chain, tool: int, q,
             if top < -reach:
                 continue
             low_y, high_y = -extent(-y), extent(y)
-            if low_y > 0:
-                left = min(left, low_y)
-            elif high_y < 0:
-                right = min(right, -high_y)
+            for side, near, far in ((0, low_y, high_y), (1, -high_y, -low_y)):
+                if near > 0:
+                    inner[side] = min(inner[side], near)
+                    outer[side] = max(outer[side], far)
     if not np.isfinite(depth):
         return None
-    opening = left + right if np.isfinite(left) and np.isfinite(right) else 0.0
-    return float(opening), float(depth)
+    closed = not all(np.isfinite(inner))
+    opening = 0.0 if closed else inner[0] + inner[1]
+    span = (0.0, float(max(outer))) if closed else (0.5 * opening, 0.5 * (outer[0] + outer[1]))
+    return float(opening), float(depth), span

@@ -219,6 +219,13 @@ class World:
         return values, size[0], size[1]
 
     @property
+    def finger_span(self) -> tuple[float, float] | None:
+        """(inner, outer): how far the open fingers' near and far sides stand from the
+        tool's axis along its y axis, near the tool origin (the Panda's: 4.0 and 5.3
+        cm). None without fingers."""
+        return self._gripper[2] if self._gripper else None
+
+    @property
     def fingertip_depth(self) -> float | None:
         """How far (m) the open fingertips reach beyond the tool origin along the
         tool's z axis (the Panda's: 1 cm). None without fingers."""

@@ -34,11 +34,13 @@ from tampcli.optimize.kinds.push_contact import (
     candidate_faces,
     cone_rows,
     face_of,
+    finger_shift,
     level_face_grip,
     level_lift,
     offset_rows,
     path_rows,
     planar_face_grip,
+    pushing_fingers,
     same_yaw,
 )
 from tampcli.optimize.layout import grip_block, waypoint_block
@@ -105,6 +107,11 @@ def _measured_touch(walk, step, obj_pose, choice, q0):
     return q0
 
 
+def _half_width(info, angle: float) -> float:
+    """Half the width a pusher meets on the face at `angle`: a drum's radius."""
+    return info.half[0] if info.disk else face_of(info, angle).width
+
+
 def face_grip(problem, step, choice):
     """The grip of a push whose face is `choice.face` (planar: at choice.z, choice.yaw)."""
     info = problem.bodies[step.obj]
@@ -114,13 +121,14 @@ def face_grip(problem, step, choice):
         z = choice.z if choice.z is not None else info.pose[2]
         yaw = choice.yaw if choice.yaw is not None else info.pose[3]
         return planar_face_grip(face, yaw, z - float(robot.base_pose[2, 3]), robot.radius)
+    shift = finger_shift(choice.finger, problem.world.finger_span)
     if choice.level:
         lift = level_lift(info)
         if lift is None:
             raise ValueError(f"{step.name}: {step.obj} is too low for a level hand")
         return level_face_grip(face, lift, choice.reach,
-                               problem.hand.depth)
-    return arm_face_grip(face, choice.reach)
+                               problem.hand.depth, shift)
+    return arm_face_grip(face, choice.reach, shift)
 
 
 class Push(ModeKind):
@@ -197,7 +205,10 @@ class Push(ModeKind):
             # The hand down (its fingers' side on the face) first; level (its
             # fingertips on the face) where the object is tall enough for it.
             levels = (False, True) if level_lift(info) is not None else (False,)
-            choices = [GripChoice(face=a, level=level) for level in levels for a in aligned]
+            span = problem.world.finger_span
+            choices = [GripChoice(face=a, level=level, finger=finger)
+                       for level in levels for a in aligned
+                       for finger in pushing_fingers(_half_width(info, a), span)]
             q0, choice = _clear_at_both_ends(walk, step, obj_pose, end, choices)
             q0 = _measured_touch(walk, step, obj_pose, choice, q0)
             G = transforms.pose_inverse(walk.grip_of(step).matrix(0.0))

@@ -1,7 +1,8 @@
 """What `verify` re-measures of a push (kinds/push.py's `check`): a push, not a drag.
 
-From the trajectory alone: the face touched is the one the tool is beyond at
-the start of the pushing motion (push_contact.contacted_face); the pusher
+From the trajectory alone: the face touched is the one the robot's touch (its
+nearest points' middle) is beyond at the start of the pushing motion
+(push_contact.contacted_face); the pusher
 touches it (within the touch tolerance) without going into the object, also
 on the last segment of its approach (which the collision check leaves to the
 mode); every step of the object moves into that face within the friction
@@ -28,6 +29,7 @@ STILL = 1e-6  # m: shorter steps have no direction
 TURN = math.radians(2.0)
 LIFT = 1e-3  # m and 1 - cos(tilt): the pushed object keeps its height and stays upright
 APPROACH_SAMPLES = 10  # points on the approach's last segment
+TOUCH_BAND = 2e-3  # m: links this much farther than the nearest touch the object too
 
 
 def check_push(walk, step, touch: float) -> list[str]:
@@ -39,10 +41,13 @@ def check_push(walk, step, touch: float) -> list[str]:
     tools = problem.world.tool_poses(walk.traj[start:end + 1])
     grasp = transforms.pose_inverse(tools[0]) @ before
     objs = tools @ grasp
-    rel = (transforms.pose_inverse(before) @ tools[0])[:3, 3]
-    face = contacted_face(info, rel)
+    gap, point = _touch(problem, obj, before, walk.traj[start])
+    # The face the pusher is beyond where it touches (one finger alone pushes a narrow
+    # face: the tool's origin stands beside the object, not behind it).
+    rel = transforms.pose_inverse(before) @ np.append(
+        tools[0][:3, 3] if point is None else point, 1.0)
+    face = contacted_face(info, rel[:3])
     out = []
-    gap = clearance(problem, obj, before, walk.traj[start:start + 1])
     if gap > touch:
         out.append(f"{name}: the push starts {100 * gap:.1f} cm away from {obj}")
     if start > 0:
@@ -74,6 +79,25 @@ def check_push(walk, step, touch: float) -> list[str]:
             out.append(f"{name}: {obj} lifts or tips at waypoint {start + i}")
             break
     return out
+
+
+def _touch(problem, obj: str, pose, q):
+    """(clearance, where the robot touches `obj`) at q: the middle of the robot's
+    points nearest it, over the links within TOUCH_BAND of the nearest (world; None
+    beyond 5 cm). Two fingers straddling a drum touch it either side: their middle
+    is behind it."""
+    horizon = 0.05
+    others = frozenset(n for n in problem.bodies if n != obj)
+    (found,) = problem.checker.distances_many(np.atleast_2d(q), {obj: pose}, None,
+                                              [others], horizon)
+    target = f"body:{obj}"
+    near = [c for c in found if target in (c.a, c.b)]
+    if not near:
+        return horizon, None
+    gap = min(c.distance for c in near)
+    points = [c.point_b if c.a == target else c.point_a for c in near
+              if c.distance <= gap + TOUCH_BAND]
+    return gap, np.mean(points, axis=0)
 
 
 def clearance(problem, obj: str, pose, qs) -> float:

@@ -39,6 +39,11 @@ PANDA_WRIST_HALF = 0.045  # m: the wrist (panda_link7) either side of a level ha
 LEVEL_CLEARANCE = PANDA_WRIST_HALF + 0.011
 LEVEL_TIGHT = PANDA_WRIST_HALF + 0.0015
 BOX_FACES = (0.0, 0.5 * math.pi, math.pi, -0.5 * math.pi)
+# Both open fingers push a face only where it reaches this far past their near sides at
+# the face's middle; a narrower face (or a thinner drum) would pass between them (blind21
+# p06: a 4 cm cube straddled by the KUKA's fingers 8 cm apart, its push 1 cm short).
+FINGER_OVERLAP = 0.005
+FINGER_HALF = 0.01  # m: half a fingertip's width along the tool's y axis, at most
 
 
 @dataclass(frozen=True)
@@ -114,18 +119,39 @@ def planar_face_grip(face: Face, yaw: float, dz: float, radius: float) -> FaceGr
                     tuple(R @ face.tangent), face.depth + radius + CONTACT_GAP)
 
 
-def arm_face_grip(face: Face, reach: float | None = None) -> FaceGrip:
+def pushing_fingers(half_width: float, span: tuple[float, float] | None) -> tuple[int, ...]:
+    """GripChoice.finger values for a face (or drum) of this half width, the open
+    fingers' near and far sides `span` from the tool's axis (World.finger_span): both
+    (0) where the face reaches past their near sides, else either one alone (+1, -1)."""
+    if span is None or half_width >= span[0] + FINGER_OVERLAP:
+        return (0,)
+    return (1, -1)
+
+
+def finger_shift(finger: int, span: tuple[float, float] | None) -> float:
+    """How far along the tool's y axis the contact lies from the tool's axis: 0 for
+    both fingers, else the middle of the one finger's tip (at most FINGER_HALF
+    past its near side: a finger's collision hull widens above its tip)."""
+    if not finger or span is None:
+        return 0.0
+    inner, outer = span
+    return finger * (inner + min(FINGER_HALF, 0.5 * (outer - inner)))
+
+
+def arm_face_grip(face: Face, reach: float | None = None, shift: float = 0.0) -> FaceGrip:
     """The arm's tool pointing down, its x axis out of the face: the open fingers'
     side (spread along the tool's y, along the face) against it, at the centre's height.
 
     `reach`: tool origin to the object's centre as measured on the arm's own
     collision shapes (see push.py's guess); by default the Panda's fingers.
+    `shift`: the contact's place along the tool's y axis (finger_shift): one finger
+    alone centred on a narrow face.
     """
     tool_in_obj = np.column_stack([-face.normal, face.tangent, [0.0, 0.0, -1.0]])
     G = tool_in_obj.T
     if reach is None:
         reach = face.depth + PANDA_FINGER_HALF + CONTACT_GAP
-    return FaceGrip((0.0, 0.0, 0.0), tuple(map(tuple, G)), tuple(G @ face.normal),
+    return FaceGrip((0.0, shift, 0.0), tuple(map(tuple, G)), tuple(G @ face.normal),
                     tuple(G @ face.tangent), reach)
 
 
@@ -141,16 +167,18 @@ def level_lift(info) -> float | None:
 
 
 def level_face_grip(face: Face, lift: float, reach: float | None = None,
-                    fingertip: float = 0.0) -> FaceGrip:
+                    fingertip: float = 0.0, shift: float = 0.0) -> FaceGrip:
     """The arm's hand level, its tool z axis into the face and the fingers spread along
     it: the fingertips push (under a low ceiling). The tool's x axis points down.
-    `fingertip`: how far the fingertips reach beyond the tool origin (the World's)."""
+    `fingertip`: how far the fingertips reach beyond the tool origin (the World's);
+    `shift` as arm_face_grip's."""
     tool_in_obj = np.column_stack([[0.0, 0.0, -1.0], face.tangent, face.normal])
     G = tool_in_obj.T
     if reach is None:
         reach = face.depth + fingertip + CONTACT_GAP
-    return FaceGrip(tuple(G @ np.array([0.0, 0.0, -lift])), tuple(map(tuple, G)),
-                    tuple(G @ face.normal), tuple(G @ face.tangent), reach)
+    return FaceGrip(tuple(G @ np.array([0.0, 0.0, -lift]) + (0.0, shift, 0.0)),
+                    tuple(map(tuple, G)), tuple(G @ face.normal), tuple(G @ face.tangent),
+                    reach)
 
 
 # ---------------------------------------------------------------- rows

@@ -1,0 +1,51 @@
+"""One finger alone pushes a face narrower than the open fingers' spread (blind21 p06:
+the KUKA's fingers, 8 cm apart, straddled a 4 cm cube and its push started 1 cm off)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from tampcli.optimize.bodies import pose_matrix
+from tampcli.optimize.kinds.push_check import clearance
+from tampcli.optimize.kinds.push_contact import finger_shift, pushing_fingers
+from tampcli.optimize.solve import solve
+
+from .helpers import lowered_folder, ops
+
+P06 = Path(__file__).resolve().parents[2] / "problems" / "blind21" / "p06"
+KUKA = (0.04, 0.06)  # World.finger_span of the KUKA iiwa's open fingers (m)
+
+
+def test_a_face_narrower_than_the_fingers_spread_is_pushed_by_either_finger_alone():
+    assert pushing_fingers(0.02, KUKA) == (1, -1)  # a 4 cm face between fingers 8 cm apart
+    assert pushing_fingers(0.044, KUKA) == (1, -1)  # overlapping them by 4 mm only
+    assert pushing_fingers(0.046, KUKA) == (0,)  # a 9.2 cm face: both fingers on it
+    assert pushing_fingers(0.02, None) == (0,)  # no fingers: the tool itself
+    assert finger_shift(0, KUKA) == 0.0
+    assert finger_shift(1, KUKA) == pytest.approx(0.05)  # the finger's middle
+    assert finger_shift(-1, (0.039, 0.0674)) == pytest.approx(-0.049)  # at most 1 cm in
+
+
+@pytest.fixture(scope="module")
+def cube_aside():
+    with lowered_folder(P06, "p06", ops("(push cube aside)")) as problem:
+        yield problem
+
+
+def test_the_cube_between_kerb_and_crate_is_touched_by_one_finger(cube_aside):
+    out = solve(cube_aside, "keyframes")
+    assert out.status == "solved", out.worst_constraint
+    assert out.choices[0].finger in (1, -1)
+    step = cube_aside.steps[0]
+    info = cube_aside.bodies["cube"]
+    gap = clearance(cube_aside, "cube", pose_matrix(*info.pose), out.keyframes.q[step.keyframes[0]])
+    assert -1e-3 <= gap <= 2e-3  # the touch (CONTACT_GAP 0.5 mm), as verify allows it
+
+
+def test_the_one_finger_push_passes_verify_at_the_path_stage(cube_aside):
+    out = solve(cube_aside, "path")
+    assert out.status == "solved", out.worst_constraint
+    (entry,) = [g for g in out.grasp_report if g["object"] == "cube"]
+    assert entry["fingers"] == "one" and entry["face"] == "+x"
