@@ -43,10 +43,14 @@ class SolveOptions:
         symbolic-only solution.
     optimize: the trajectory NLPs; its `time_limit` (s) caps one stage of one
         skeleton, and is cut to what is left of the solve's.
+    forced, forbidden: ground action names every plan must contain and none may
+        (`--force`, `--forbid`: the task restricted before any search).
     """
 
     bnb: BnBOptions = BnBOptions()
     optimize: OptimizeOptions = OptimizeOptions()
+    forced: tuple[str, ...] = ()
+    forbidden: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -127,6 +131,11 @@ def solving(paths: InputPaths, options: SolveOptions = SolveOptions(),
     """
     timers = Timers()
     inputs = read_inputs(paths, timers)
+    if options.forced or options.forbidden:
+        from tampcli.task.restrict import restrict
+
+        inputs = dataclasses.replace(inputs, task=restrict(inputs.task, options.forced,
+                                                           options.forbidden))
     if inputs.scene is None:
         yield Solved(_solve_symbolic(inputs, options, timers), inputs)
         return

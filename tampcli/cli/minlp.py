@@ -9,6 +9,7 @@ and reports like `solve`.
 from __future__ import annotations
 
 from tampcli import solution as solution_file
+from tampcli.cli.restriction import add_restriction
 from tampcli.errors import ExitCode, UsageError
 
 
@@ -23,6 +24,7 @@ def add_parser(p) -> None:
                    help="objective = trajectory cost + W * symbolic cost (default 0.1)")
     p.add_argument("--seed", type=int, default=0, help="random seed (default 0)")
     p.add_argument("--out", metavar="FILE", help="write solution.json here (whatever the outcome)")
+    add_restriction(p)
     add_arguments(p)
 
 
@@ -43,10 +45,6 @@ def add_arguments(p) -> None:
     p.add_argument("--schedule", metavar="SOLUTION",
                    help="a solution.json whose actions stay at its waypoints: optimize only "
                         "the trajectory of that schedule")
-    p.add_argument("--force", action="append", default=[], metavar="ACTION",
-                   help="a ground action the plan must contain, e.g. \"(pick box start)\"")
-    p.add_argument("--forbid", action="append", default=[], metavar="ACTION",
-                   help="a ground action the plan must not contain")
 
 
 def options_from_args(args):
@@ -58,7 +56,7 @@ def options_from_args(args):
                             polygon_sides=args.polygon_sides,
                             collision_model=args.collision_model, warm_start=args.warm_start,
                             schedule=args.schedule,
-                            forced=tuple(args.force), forbidden=tuple(args.forbid),
+                            forced=tuple(args.forced), forbidden=tuple(args.forbidden),
                             seed=args.seed)
     except ValueError as err:
         raise UsageError(str(err), "tampcli solve --method minlp") from None

@@ -17,12 +17,14 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from tampcli.cli.restriction import add_restriction
 from tampcli.errors import ExitCode, InputError, UsageError
 from tampcli.pddl.load import load
 from tampcli.search.eliminate import eliminate_redundant
 from tampcli.search.heuristics import HEURISTICS, HFF
 from tampcli.search.searches import SEARCHES, SearchLimits
 from tampcli.task.ground import ground
+from tampcli.task.restrict import restrict
 
 OPTIMAL_HEURISTIC = "lmcut"
 FALLBACK_OPTIMAL_HEURISTIC = "hmax"
@@ -60,6 +62,7 @@ def add_parser(p) -> None:
     p.add_argument("--loopless", action="store_true",
                    help="with -k K >= 2: only plans that never revisit a state, the "
                         "skeletons solve draws first, in its order")
+    add_restriction(p)
 
 
 def _format_cost(cost: float) -> str:
@@ -85,7 +88,7 @@ def run(args, ui) -> int:
         ui.warn(warning)
 
     start = time.perf_counter()
-    task = ground(loaded.domain, loaded.problem)
+    task = restrict(ground(loaded.domain, loaded.problem), args.forced, args.forbidden)
     seconds["ground"] = time.perf_counter() - start
     stats: dict = {"facts": len(task.facts), "operators": len(task.operators),
                    "axioms": len(task.axioms)}

@@ -90,7 +90,9 @@ def add_parser(p) -> None:
                         "lesson's time-indexed MINLP solved to global optimality by SCIP "
                         "(planar robot; docs/minlp.md) (default bnb)")
     from tampcli.cli import minlp
+    from tampcli.cli.restriction import add_restriction
 
+    add_restriction(p)
     minlp.add_arguments(p.add_argument_group("with --method minlp"))
 
 
@@ -105,7 +107,7 @@ def options_from_args(args) -> SolveOptions:
         except OptionError as err:
             flag = next((flag.name for flag in flags if flag.field == err.field), None)
             raise UsageError(err.message, "tampcli solve", key=flag) from None
-    return SolveOptions(**parts)
+    return SolveOptions(**parts, forced=tuple(args.forced), forbidden=tuple(args.forbidden))
 
 
 def run(args, ui) -> int:

@@ -19,6 +19,7 @@ from tampcli.minlp.model import build
 from tampcli.minlp.options import MinlpOptions
 from tampcli.minlp.warm import add_warm_start, fix_schedule
 from tampcli.solution import Solution
+from tampcli.task.restrict import op_indices
 
 
 def solve_minlp(domain_path: str, problem_path: str, scene_path: str | None = None,
@@ -131,21 +132,9 @@ def prepare(domain_path, problem_path, scene_path, modes_path, options) -> Prepa
         robot = {"model": scene.robot.model, "joints": list(world.joint_names),
                  "tool_link": world.tool_link}
     return Prepared(task, scene, modes, str(scene_file), str(modes_file), *limits, robot,
-                    _op_indices(task, options.forced, "forced"),
-                    _op_indices(task, options.forbidden, "forbidden"))
+                    op_indices(task, options.forced, "--force"),
+                    op_indices(task, options.forbidden, "--forbid"))
 
 
 def _finite(x: float) -> float | None:
     return float(x) if abs(x) < 1e19 else None
-
-
-def _op_indices(task, names, what: str) -> frozenset[int]:
-    index = {op.name: i for i, op in enumerate(task.operators)}
-    out = set()
-    for name in names:
-        key = "(" + " ".join(name.replace("(", " ").replace(")", " ").lower().split()) + ")"
-        if key not in index:
-            raise InputError(f"{what} action {name!r} is not a ground action of the task",
-                             key=what)
-        out.add(index[key])
-    return frozenset(out)

@@ -30,6 +30,7 @@ class GripChoice:
     # push (arm): 0, both open fingers on the face; +1 / -1, only the one on the tool's
     # +y / -y side, centred on the contact (a face narrower than the fingers' spread)
     finger: int = 0
+    shift: float | None = None  # push (arm), one finger: its contact along the tool's y, measured
 
 
 NO_CHOICE = GripChoice()

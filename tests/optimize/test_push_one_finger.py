@@ -1,14 +1,17 @@
 """One finger alone pushes a face narrower than the open fingers' spread (blind21 p06:
-the KUKA's fingers, 8 cm apart, straddled a 4 cm cube and its push started 1 cm off)."""
+the KUKA's fingers, 8 cm apart, straddled a 4 cm cube and its push started 1 cm off),
+and a round object's push keeps room in the friction cone."""
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from tampcli.optimize.bodies import pose_matrix
-from tampcli.optimize.kinds.push_check import clearance
+from tampcli.optimize.kinds.push_check import clearance, touch_at
 from tampcli.optimize.kinds.push_contact import finger_shift, pushing_fingers
 from tampcli.optimize.solve import solve
 
@@ -49,3 +52,26 @@ def test_the_one_finger_push_passes_verify_at_the_path_stage(cube_aside):
     assert out.status == "solved", out.worst_constraint
     (entry,) = [g for g in out.grasp_report if g["object"] == "cube"]
     assert entry["fingers"] == "one" and entry["face"] == "+x"
+
+
+P08 = Path(__file__).resolve().parents[2] / "problems" / "blind14" / "p08"
+
+
+def test_a_can_pushed_by_one_finger_keeps_its_keyframes_inside_the_cone():
+    """A round object's pushed face turns with the hand: the keyframes keep the push
+    within half the friction cone, so the path has room (blind14 p08: the can went 27
+    degrees off the touch at the path's first step, the cone's edge is 26.6)."""
+    with lowered_folder(P08, "p08", ops("(push can can-start can-goal)")) as problem:
+        out = solve(problem, "path")
+        assert out.status == "solved", out.worst_constraint
+        step = problem.steps[0]
+        info = problem.bodies["can"]
+        start = pose_matrix(*info.pose)
+        q0 = out.keyframes.q[step.keyframes[0]]
+        gap, point = touch_at(problem, "can", start, q0)
+        assert gap <= 2e-3
+        assert out.choices[0].finger in (1, -1)  # a 5 cm can between fingers 8 cm apart
+        inward = start[:2, 3] - point[:2]
+        moved = np.array(out.object_poses["can"][-1][:2]) - start[:2, 3]
+        cos = inward @ moved / np.linalg.norm(inward) / np.linalg.norm(moved)
+        assert math.degrees(math.acos(cos)) <= 15.0

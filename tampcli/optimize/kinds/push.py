@@ -25,7 +25,7 @@ from tampcli.optimize.bodies import TOUCH_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
 from tampcli.optimize.grips import held_pose
 from tampcli.optimize.kinds.base import ModeKind
-from tampcli.optimize.kinds.push_check import check_push, clearance
+from tampcli.optimize.kinds.push_check import check_push, touch_at
 from tampcli.optimize.kinds.push_contact import (
     BOX_FACES,
     CONTACT_GAP,
@@ -51,6 +51,7 @@ MEASURE_LIMIT = 0.01  # m: one measurement corrects the reach by at most this ..
 MEASURE_TOTAL = 0.04  # m: ... and all of them together by at most this
 MEASURE_ROUNDS = 5  # measurements of the touch, each after IK at the corrected reach
 MEASURE_TOLERANCE = 1e-3  # m: a touch this close to CONTACT_GAP needs no correction
+ROUND_CONE_SHARE = 0.5  # of the friction cone's tangent: a round object's keyframes
 
 
 def _clear_at_both_ends(walk, step, obj_pose, end, choices):
@@ -89,17 +90,32 @@ def _measured_touch(walk, step, obj_pose, choice, q0):
     shapes (the fingers' extent behind the tool origin is the arm's), corrected and
     measured again until the touch is CONTACT_GAP: a flat face needs one round; a
     drum between the open fingers touches their inner edges, 2.4 cm nearer than
-    their outer sides' tangent plane (blind3 p08: 9 cm across)."""
+    their outer sides' tangent plane (blind3 p08: 9 cm across). One finger alone on a
+    drum is also moved along the face until it touches on the line of the push: a
+    finger's rounded or tapered side meets a drum off its middle (blind14 p08: 1.1
+    cm aside, so the can went off 27 degrees)."""
     problem = walk.problem
+    info = problem.bodies[step.obj]
     nominal = face_grip(problem, step, choice).reach
     reach = nominal
+    lateral = info.disk and choice.finger != 0
+    tangent = face_of(info, choice.face).tangent
+    shift = start = finger_shift(choice.finger, problem.world.finger_span)
     for _ in range(MEASURE_ROUNDS):
-        gap = clearance(problem, step.obj, obj_pose, q0) - CONTACT_GAP
-        if abs(gap) <= MEASURE_TOLERANCE:
+        gap, point = touch_at(problem, step.obj, obj_pose, q0)
+        gap -= CONTACT_GAP
+        aside = 0.0
+        if lateral and point is not None:
+            aside = float((transforms.pose_inverse(obj_pose) @ np.append(point, 1.0))[:3]
+                          @ tangent)
+        if abs(gap) <= MEASURE_TOLERANCE and abs(aside) <= MEASURE_TOLERANCE:
             break
         reach = float(np.clip(reach - np.clip(gap, -MEASURE_LIMIT, MEASURE_LIMIT),
                               nominal - MEASURE_TOTAL, nominal + MEASURE_TOTAL))
-        walk.choices[step.index] = dataclasses.replace(choice, reach=reach)
+        shift = float(np.clip(shift + np.clip(aside, -MEASURE_LIMIT, MEASURE_LIMIT),
+                              start - MEASURE_TOTAL, start + MEASURE_TOTAL))
+        choice = dataclasses.replace(choice, reach=reach, shift=shift if lateral else None)
+        walk.choices[step.index] = choice
         walk.q_prev = q0
         q0, _ = walk.best_of([(obj_pose @ transforms.pose_inverse(
             walk.grip_of(step).matrix(0.0)), None)])
@@ -121,7 +137,8 @@ def face_grip(problem, step, choice):
         z = choice.z if choice.z is not None else info.pose[2]
         yaw = choice.yaw if choice.yaw is not None else info.pose[3]
         return planar_face_grip(face, yaw, z - float(robot.base_pose[2, 3]), robot.radius)
-    shift = finger_shift(choice.finger, problem.world.finger_span)
+    shift = choice.shift if choice.shift is not None else finger_shift(
+        choice.finger, problem.world.finger_span)
     if choice.level:
         lift = level_lift(info)
         if lift is None:
@@ -244,7 +261,11 @@ class Push(ModeKind):
             C.rest_height(walk.rows.eq, step.name, H1, step.rest_z, step.support)
             if not info.disk:  # a cylinder's or sphere's yaw changes nothing
                 same_yaw(walk.rows.eq, step.name, H0, H1)
-        cone_rows(walk.rows.ineq, step.name, H0, H1, face.angle)
+        # A round object's pushed "face" turns with the hand: the NLP would turn it to the
+        # cone's edge to save joint motion, leaving the path no slack (blind14 p08's can,
+        # 27 degrees off at its first step). Its keyframes keep within half the cone.
+        cone_rows(walk.rows.ineq, step.name, H0, H1, face.angle,
+                  PUSH_FRICTION * (ROUND_CONE_SHARE if info.disk else 1.0))
         walk.state.pop(step.obj)
         walk.placement_rows(step, H1)
         walk.collide(k1, step, held_of(step.obj, grip, t, t_block), frame, {step.support})

@@ -41,7 +41,7 @@ def check_push(walk, step, touch: float) -> list[str]:
     tools = problem.world.tool_poses(walk.traj[start:end + 1])
     grasp = transforms.pose_inverse(tools[0]) @ before
     objs = tools @ grasp
-    gap, point = _touch(problem, obj, before, walk.traj[start])
+    gap, point = touch_at(problem, obj, before, walk.traj[start])
     # The face the pusher is beyond where it touches (one finger alone pushes a narrow
     # face: the tool's origin stands beside the object, not behind it).
     rel = transforms.pose_inverse(before) @ np.append(
@@ -81,7 +81,7 @@ def check_push(walk, step, touch: float) -> list[str]:
     return out
 
 
-def _touch(problem, obj: str, pose, q):
+def touch_at(problem, obj: str, pose, q):
     """(clearance, where the robot touches `obj`) at q: the middle of the robot's
     points nearest it, over the links within TOUCH_BAND of the nearest (world; None
     beyond 5 cm). Two fingers straddling a drum touch it either side: their middle
