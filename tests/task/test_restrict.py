@@ -13,7 +13,6 @@ from tampcli.search.heuristics import HFF
 from tampcli.search.searches import astar
 from tampcli.task.ground import ground
 from tampcli.task.restrict import restrict
-
 from tests.task.tasks import replay
 
 ROOT = Path(__file__).resolve().parents[2]
