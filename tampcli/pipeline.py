@@ -285,7 +285,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
     result = eliminate_useless(result, evaluate,
                                lambda ops, i: without_step(inputs.task, ops, i),
                                options.bnb.symbolic_weight, deadline,
-                               {op.name: op for op in inputs.task.operators})
+                               {op.name: op for op in inputs.task.operators}, movable)
     timers.add("optimize", result.stats.get("optimize_seconds", 0.0))
     timers.add("bnb", time.perf_counter() - bnb_start)
     first = result.stats.get("first_solution_seconds")

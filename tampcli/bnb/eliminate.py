@@ -15,8 +15,9 @@ has often drawn it already (the blocker moved away, less the move, is the
 skeleton that failed first). It is not optimized again when the search found it
 infeasible before its path stage (no record: the search's says why; those NLPs
 would fail again), nor when its path stage failed on a body the skeleton leaves
-in the way (optimize/motion.py: it would meet that body again), nor when it
-solved it (its path is taken, a record saying so); one pruned by a bound, or
+in the way (optimize/motion.py: it would meet that body again) or on a row naming
+a movable body (the search's blocker lesson: the same skeleton meets it again), nor
+when it solved it (its path is taken, a record saying so); one pruned by a bound, or
 that failed otherwise at its path stage (sampled starts:
 blind7 p03's carry through a maze failed in the 2-action skeleton and passed in
 a 4-action one), is evaluated, its record naming the search's: a plan with an
@@ -35,6 +36,7 @@ from collections.abc import Callable, Sequence
 from typing import Any
 
 from tampcli.bnb.values import Judged
+from tampcli.optimize.blockers import blocker_of
 from tampcli.optimize.motion import IN_THE_WAY
 from tampcli.solution import SkeletonRecord
 from tampcli.solution_kkt import KktStages
@@ -45,10 +47,12 @@ ELIMINATION_SHARE = 0.1  # of solve's time limit, kept for action elimination on
 
 def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], Any],
                       symbolic_weight: float, deadline: float,
-                      operators: dict[str, Any] | None = None):
+                      operators: dict[str, Any] | None = None,
+                      movable: frozenset[str] = frozenset()):
     """`result` (a BnBResult) with the incumbent's useless actions removed; where some
     were, and the task's `operators` (by name) are given, the cheapest of that answer
-    and the plans the search solved with no action to drop (`_cheapest_minimal`)."""
+    and the plans the search solved with no action to drop (`_cheapest_minimal`).
+    `movable`: the scene's movable bodies (a path failure naming one is not rerun)."""
     if result.status != "solved":
         return result
     dropped = added = skipped = 0
@@ -62,7 +66,7 @@ def eliminate_useless(result, evaluate, without_step: Callable[[Sequence, int], 
             names = tuple(op.name for op in shorter)
             known = result.judged.get(names)
             if known is not None and known.outcome == "infeasible" and (
-                    known.stage != "path" or _met_in_the_way(result, known)):
+                    known.stage != "path" or _met_in_the_way(result, known, movable)):
                 skipped += 1
                 continue
             symbolic = float(sum(op.cost for op in shorter))
@@ -129,13 +133,18 @@ def _cheapest_minimal(result, without_step, symbolic_weight: float, operators: d
     return best
 
 
-def _met_in_the_way(result, known: Judged) -> bool:
+def _met_in_the_way(result, known: Judged, movable: frozenset[str]) -> bool:
     """Whether the search's path stage failed that skeleton on a body it leaves in the
-    way (optimize.motion: a path exists only with the body out of it): run again, the
-    same skeleton meets the same body (blind15 p06: the answer less the push of the
-    crate out of the corridor, 12 s to fail again)."""
+    way (optimize.motion: a path exists only with the body out of it), or on a row
+    naming a movable body the failing action does not move (the search's lesson, a
+    blocker: optimize/blockers.py): run again, the same skeleton meets the same body
+    (blind15 p06: the answer less the push of the crate out of the corridor, 12 s to
+    fail again; blind21 p06: the crate's push into the cube, 11 s)."""
     record = next((r for r in result.skeletons if r.rank == known.rank), None)
-    return record is not None and IN_THE_WAY in (record.reason or "")
+    if record is None:
+        return False
+    reason = record.reason or ""
+    return IN_THE_WAY in reason or blocker_of(reason, movable) is not None
 
 
 def _again(known: Judged | None) -> str:

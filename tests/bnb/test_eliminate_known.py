@@ -142,3 +142,26 @@ def test_a_dear_answer_left_by_elimination_yields_to_a_cheaper_minimal_plan():
                               BnBOptions(prefix_pruning=False))
     result = eliminate_useless(result, table_evaluator(table), drop_b, 0.1, float("inf"))
     assert [op.name for op in result.best_plan] == list(SHORT)
+
+
+def test_a_shorter_skeleton_whose_path_row_named_a_movable_body_is_not_tried_again():
+    """blind21 p06: the answer less the cube's carry is the skeleton whose push ran the
+    crate into the cube; run again (11 s) it meets the cube again."""
+    calls = []
+    row = ("path stage infeasible: motion 1 before (place a g): collision a vs b "
+           "(margin 1 mm) by 3.7 cm")
+    table = {(SHORT, "path"): R("infeasible", worst_constraint=row)}
+    result = branch_and_bound(plans(SHORT, LONG), table_evaluator(table, calls),
+                              BnBOptions(prefix_pruning=False))
+    calls.clear()
+    result = eliminate_useless(result, table_evaluator({}, calls), drop_b, 0.1, float("inf"),
+                               movable=frozenset({"a", "b"}))
+    assert calls == [] and [op.name for op in result.best_plan] == list(LONG)
+    assert result.stats["elimination_skipped"] == 1
+    # Without b among the movable bodies (a wall), nothing is learned: it is tried again.
+    result = branch_and_bound(plans(SHORT, LONG), table_evaluator(table, calls),
+                              BnBOptions(prefix_pruning=False))
+    calls.clear()
+    eliminate_useless(result, table_evaluator({}, calls), drop_b, 0.1, float("inf"),
+                      movable=frozenset({"a"}))
+    assert (SHORT, "path") in calls

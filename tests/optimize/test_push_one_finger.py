@@ -12,7 +12,7 @@ import pytest
 
 from tampcli.optimize.bodies import pose_matrix
 from tampcli.optimize.kinds.push_check import clearance, touch_at
-from tampcli.optimize.kinds.push_contact import finger_shift, pushing_fingers
+from tampcli.optimize.kinds.push_contact import NLP_FRICTION, finger_shift, pushing_fingers
 from tampcli.optimize.solve import solve
 
 from .helpers import lowered_folder, ops
@@ -57,10 +57,10 @@ def test_the_one_finger_push_passes_verify_at_the_path_stage(cube_aside):
 P08 = Path(__file__).resolve().parents[2] / "problems" / "blind14" / "p08"
 
 
-def test_a_can_pushed_by_one_finger_keeps_its_keyframes_inside_the_cone():
-    """A round object's pushed face turns with the hand: the keyframes keep the push
-    within half the friction cone, so the path has room (blind14 p08: the can went 27
-    degrees off the touch at the path's first step, the cone's edge is 26.6)."""
+def test_a_can_pushed_by_one_finger_keeps_inside_the_cone_verify_judges_by():
+    """The NLPs push within a cone a little inside verify's (NLP_FRICTION): on the edge,
+    a step passed the NLP's tolerance and failed verify's (blind14 p08: the can went 27
+    degrees off its touch at the path's first step, the cone's edge is 26.6)."""
     with lowered_folder(P08, "p08", ops("(push can can-start can-goal)")) as problem:
         out = solve(problem, "path")
         assert out.status == "solved", out.worst_constraint
@@ -74,4 +74,4 @@ def test_a_can_pushed_by_one_finger_keeps_its_keyframes_inside_the_cone():
         inward = start[:2, 3] - point[:2]
         moved = np.array(out.object_poses["can"][-1][:2]) - start[:2, 3]
         cos = inward @ moved / np.linalg.norm(inward) / np.linalg.norm(moved)
-        assert math.degrees(math.acos(cos)) <= 15.0
+        assert math.degrees(math.acos(cos)) <= math.degrees(math.atan(NLP_FRICTION)) + 0.5

@@ -51,7 +51,6 @@ MEASURE_LIMIT = 0.01  # m: one measurement corrects the reach by at most this ..
 MEASURE_TOTAL = 0.04  # m: ... and all of them together by at most this
 MEASURE_ROUNDS = 5  # measurements of the touch, each after IK at the corrected reach
 MEASURE_TOLERANCE = 1e-3  # m: a touch this close to CONTACT_GAP needs no correction
-ROUND_CONE_SHARE = 0.5  # of the friction cone's tangent: a round object's keyframes
 
 
 def _clear_at_both_ends(walk, step, obj_pose, end, choices):
@@ -261,11 +260,7 @@ class Push(ModeKind):
             C.rest_height(walk.rows.eq, step.name, H1, step.rest_z, step.support)
             if not info.disk:  # a cylinder's or sphere's yaw changes nothing
                 same_yaw(walk.rows.eq, step.name, H0, H1)
-        # A round object's pushed "face" turns with the hand: the NLP would turn it to the
-        # cone's edge to save joint motion, leaving the path no slack (blind14 p08's can,
-        # 27 degrees off at its first step). Its keyframes keep within half the cone.
-        cone_rows(walk.rows.ineq, step.name, H0, H1, face.angle,
-                  PUSH_FRICTION * (ROUND_CONE_SHARE if info.disk else 1.0))
+        cone_rows(walk.rows.ineq, step.name, H0, H1, face.angle)
         walk.state.pop(step.obj)
         walk.placement_rows(step, H1)
         walk.collide(k1, step, held_of(step.obj, grip, t, t_block), frame, {step.support})
