@@ -219,6 +219,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
     with timers.stage("setup"):
         from tampcli.bnb.eliminate import ELIMINATION_SHARE, eliminate_useless
         from tampcli.bnb.lessons import first_move_proofs, teacher
+        from tampcli.geometry.reach import reach_ball
         from tampcli.optimize.bodies import body_info
         from tampcli.search.eliminate import without_step
         from tampcli.search.learned import LearningSource
@@ -254,7 +255,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
         infos = {b.name: body_info(b, geometry.world) for b in inputs.scene.bodies}
         source.require_moved(first_move_proofs(
             inputs.task, modes, inputs.scene, {n: infos[n] for n in movable},
-            options.optimize))
+            options.optimize, reach_ball(geometry.world)))
     learn = teacher(source, inputs.task, modes, movable, inputs.scene, infos)
 
     def heard(event) -> None:

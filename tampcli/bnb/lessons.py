@@ -1,9 +1,10 @@
 """What geometry teaches the skeleton source (search/learned.py).
 
 Before any skeleton, `first_move_proofs`: the actions that cannot move their
-object from its start pose into their target whatever came before (a planar push
-whose object's every face's friction cone misses the target), each a proved
-precondition "the object was moved before" (`LearningSource.require_moved`).
+object from its start pose whatever came before (a planar push whose object's
+every face's friction cone misses the target; an arm's grasp of an object
+standing beyond its reach), each a proved precondition "the object was moved
+before" (`LearningSource.require_moved`).
 
 Then three lessons of a failed stage, each read off the stage's result:
 
@@ -25,22 +26,26 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
+import numpy as np
+
 from tampcli.optimize.blockers import action_of, blocker_of, fixed_body_of, fixed_obstacle_of
 from tampcli.optimize.kinds import KINDS
 from tampcli.optimize.push_reach import first_push_blocked, line_meets
 from tampcli.search.learned import Blocker
 
 
-def first_move_proofs(task, modes, scene, infos, options) -> frozenset[Blocker]:
+def first_move_proofs(task, modes, scene, infos, options, ball=None) -> frozenset[Blocker]:
     """Blocker(object, action) for each ground action that cannot move its object from
-    the start pose into its target region: for the planar robot, an action of a kind
-    that moves only within a face's friction cone (ModeKind.within_cone) and no face's
-    cone leads there (push_reach.first_push_blocked). In every skeleton, that action
-    needs its object moved before it. `infos`: the movable bodies' bodies.BodyInfo by
-    name; `options`: optimize.options.OptimizeOptions. Each (kind, object, region) is
-    judged once."""
+    its start pose: for the planar robot, an action of a kind that moves only within a
+    face's friction cone (ModeKind.within_cone) into a target region no face's cone
+    leads to (push_reach.first_push_blocked); for an arm, a grasp (ModeKind.fingers)
+    of an object standing beyond its reach `ball` ((centre, radius):
+    geometry/reach.reach_ball, a bound) by more than the object's bounding sphere.
+    In every skeleton, that action needs its object moved before it. `infos`: the
+    movable bodies' bodies.BodyInfo by name; `options`: optimize.options.OptimizeOptions.
+    Each (kind, object, region) is judged once."""
     if scene.robot.model != "planar":
-        return frozenset()
+        return _out_of_reach(task, modes, infos, ball)
     regions = {r.name: r for r in scene.regions}
     judged: dict[tuple[str, str, str], bool] = {}
     found = set()
@@ -56,6 +61,26 @@ def first_move_proofs(task, modes, scene, infos, options) -> frozenset[Blocker]:
                 first_push_blocked(infos[obj], regions[to], options.waypoints)
         if judged[key]:
             found.add(Blocker(obj, op.name))
+    return frozenset(found)
+
+
+def _out_of_reach(task, modes, infos, ball) -> frozenset[Blocker]:
+    """The grasps first_move_proofs rules out for an arm (blind22 p05: a vase 1.10 m
+    out, each skeleton picking it 5 to 9 s of keyframe NLP before)."""
+    if ball is None:
+        return frozenset()
+    centre, reach = ball
+    found = set()
+    for op in task.operators:
+        mode = modes.get_mode(op.action)
+        if not mode.geometric or KINDS[mode.kind].fingers is not True:
+            continue
+        info = infos.get(mode.bind(op.args).get("object"))
+        if info is None:
+            continue
+        slack = float(np.linalg.norm(info.half))
+        if float(np.linalg.norm(np.asarray(info.pose[:3]) - centre)) > reach + slack:
+            found.add(Blocker(mode.bind(op.args)["object"], op.name))
     return frozenset(found)
 
 

@@ -14,12 +14,12 @@ import numpy as np
 
 from tampcli.geometry.collision import CollisionChecker
 from tampcli.geometry.locate import find_scene
+from tampcli.geometry.reach import reach_ball
 from tampcli.geometry.scene import read_scene
 from tampcli.geometry.startcheck import check_start_state
 from tampcli.geometry.world import World
 from tampcli.pddl import ast
 
-PANDA_REACH = 0.855  # m, from the shoulder (joint 2) to the grasp target, arm stretched
 REPORT_DISTANCE = 0.05  # m: start-state pairs closer than this are listed
 
 
@@ -169,17 +169,7 @@ def _half_height(body) -> float:
 
 
 def _shoulder_and_reach(world) -> tuple[np.ndarray, float]:
-    """Second joint's origin and the summed link lengths from it to the tool (cheap bound)."""
-    chain = world.chain
-    frames = chain.fk_list(world.start)
-    joints = [i for i, link in enumerate(chain.links) if link.q_index >= 0]
-    shoulder_link = joints[1] if len(joints) > 1 else joints[0]
-    shoulder = frames[shoulder_link][:3, 3]
-    if world.scene.robot.model == "panda":
-        return shoulder, PANDA_REACH
-    reach, i = 0.0, chain.index[world.tool_link]
-    while i > shoulder_link:
-        reach += float(np.linalg.norm(chain.links[i].origin[:3, 3]))
-        i = chain.links[i].parent
-    return shoulder, reach if reach > 0 else math.inf
+    """The arm's reach ball (geometry/reach.py: a bound); infinite without one."""
+    ball = reach_ball(world)
+    return ball if ball is not None else (world.scene.robot.base_pose[:3, 3], math.inf)
 

@@ -10,6 +10,7 @@ import time
 
 import numpy as np
 
+from tampcli.geometry.reach import reach_ball
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
 from tampcli.optimize.hand import narrows, with_hand
@@ -25,7 +26,7 @@ from tampcli.optimize.values import (
     placement_blocks,
     placements_from_blocks,
 )
-from tampcli.optimize.world_state import grip_of, reach_of
+from tampcli.optimize.world_state import grip_of
 from tampcli.solution_kkt import KktStages
 
 GRIP_BOUND = 4 * math.pi
@@ -34,30 +35,61 @@ FACE_SAME = 0.05  # rad: a contact angle this close to a face's middle is at tha
 FIXED_GRIP = 1e-6  # rad: the bounds' half width around a grip parameter kept fixed
 
 
-def beyond_reach(problem) -> str | None:
-    """A target region no point of which the Panda's tool can come near (proved).
+def beyond_reach(problem) -> tuple[str, tuple | None] | None:
+    """(why, what it rules out) where the skeleton asks the arm's tool to come near a
+    point it cannot (proved), else None.
 
-    The Panda's reach ball (world_state.reach_of: the stretched arm from the
-    shoulder) bounds where the tool can be; the tool holds the object inside
-    the object's bounding sphere, so a region farther from the ball than that
-    radius cannot receive it. Other arms' reach is sampled, not a bound: no
-    proof for them.
+    The tool's origin stays within the arm's reach ball (geometry/reach.py: a bound
+    from the chain, whatever the joint values) and holds its object within the
+    object's bounding sphere; so a region farther from the ball than that radius
+    cannot receive the object (ruled out: that action of that object into that
+    region, in every skeleton: optimize/skeleton.ImpossibleAction's tuple), and an
+    object that stands that far where it started cannot be picked there before
+    something else moved it (ruled out in this skeleton alone).
     """
-    if problem.planar or problem.scene.robot.model != "panda":
+    if problem.planar:
         return None
-    centre, reach = reach_of(problem)
+    ball = _reach_ball(problem)
+    if ball is None:
+        return None
+    centre, reach = ball
     regions = {r.name: r for r in problem.scene.regions}
+    moved = set()
     for step in problem.steps:
+        info = problem.bodies.get(step.obj)
+        if info is None:
+            continue
+        slack = math.sqrt(info.half[0] ** 2 + info.half[1] ** 2 + info.half[2] ** 2)
+        if step.held_after == step.obj and step.held_before is None and step.obj not in moved:
+            gap = float(np.linalg.norm(np.asarray(info.pose[:3]) - centre))
+            if gap > reach + slack:
+                return (f"{step.name}: {step.obj} stands {100 * (gap - reach - slack):.0f} cm "
+                        f"beyond the arm's reach ({reach:.2f} m from "
+                        f"{_point(centre)}, its centre {gap:.2f} m away)"), None
         if step.kind.places and step.target in regions:
             region = regions[step.target]
-            info = problem.bodies[step.obj]
             nearest = np.clip(centre[:2], region.lower, region.upper)
             gap = math.hypot(*(nearest - centre[:2]), step.rest_z - centre[2])
-            slack = math.sqrt(info.half[0] ** 2 + info.half[1] ** 2 + info.half[2] ** 2)
             if gap > reach + slack:
-                return (f"{step.name}: region {step.target} is {100 * (gap - reach):.0f} cm "
-                        f"beyond the arm's reach ({reach:.2f} m from the shoulder)")
+                role = "to" if "to" in step.kind.required else "on"
+                action = step.name.strip("()").split()[0]
+                return (f"{step.name}: region {step.target} is {100 * (gap - reach - slack):.0f}"
+                        f" cm beyond the arm's reach for {step.obj} ({reach:.2f} m from "
+                        f"{_point(centre)})"), (action, step.obj, (role, step.target))
+        if step.kind.places:
+            moved.add(step.obj)
     return None
+
+
+def _reach_ball(problem):
+    """geometry/reach.reach_ball of the problem's World, measured once (problem.memo)."""
+    if "reach_ball" not in problem.memo:
+        problem.memo["reach_ball"] = reach_ball(problem.world)
+    return problem.memo["reach_ball"]
+
+
+def _point(p) -> str:
+    return f"({p[0]:.2f}, {p[1]:.2f}, {p[2]:.2f})"
 
 
 def solve_placements(run: Run, origins: dict | None = None, like: dict | None = None):
@@ -89,9 +121,11 @@ def solve_placements(run: Run, origins: dict | None = None, like: dict | None = 
 
 
 def final(run: Run) -> TrajectoryResult:
-    why = beyond_reach(run.problem)
-    if why:
-        return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
+    far = beyond_reach(run.problem)
+    if far:
+        why, impossible = far
+        return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf,
+                          impossible=impossible)
     out, placements = solve_placements(run)
     if out is None:
         return run.result("solved", cost=0.0)
@@ -172,9 +206,11 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
     problem = run.problem
     if narrow is None:
         narrow = _shares_prefix(problem, warm) and warm.narrowed
-    why = beyond_reach(problem)
-    if why:
-        return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf)
+    far = beyond_reach(problem)
+    if far:
+        why, impossible = far
+        return run.result("infeasible", worst_constraint=why, proved=True, violation=math.inf,
+                          impossible=impossible)
     have = warm is not None and warm.placements and all(
         s.index in warm.placements for s in problem.steps if s.kind.places)
     if placements is not None:

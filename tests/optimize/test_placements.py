@@ -22,7 +22,7 @@ from tampcli.optimize.solve import solve
 from tampcli.optimize.values import Placement
 from tampcli.pddl import parser
 
-from .helpers import ROOT, central_differences, ops
+from .helpers import ROOT, central_differences, lowered_folder, ops
 
 BOX = BodyInfo("p", "box", (0.05, 0.03, 0.02), False, (0, 0, 0, 0), True, 1.0)
 BOX2 = BodyInfo("q", "box", (0.04, 0.045, 0.02), False, (0, 0, 0, 0), True, 2.0)
@@ -418,7 +418,6 @@ def test_the_pen_goes_into_its_case_turned_45_degrees():
     """The final stage of blind20 p01's pen into its rimmed case, solved."""
     from tampcli.optimize.solve import solve
 
-    from .helpers import lowered_folder
 
     folder = Path(__file__).resolve().parents[2] / "problems" / "blind20" / "p01"
     with lowered_folder(folder, "p01", ops("(pick pen pen-home)", "(place pen case)")) as problem:
@@ -461,10 +460,28 @@ def test_a_fixed_body_clear_of_the_region_gets_no_apart_row():
 def test_an_object_put_on_itself_is_impossible_with_every_such_action():
     """blind21 p05: the IPC blocks world's `stack` lets a block onto itself; the refusal
     read `the scene has no region or body 'c1'`."""
-    from .helpers import lowered_folder
 
     folder = Path(__file__).resolve().parents[2] / "problems" / "blind21" / "p05"
     with lowered_folder(folder, "p05", ops("(unstack c2 c1)", "(stack c2 c2)")) as problem:
         assert problem.error == "(stack c2 c2): c2 cannot be put on itself"
         assert problem.error_proved
         assert problem.impossible == ("stack", "c2", ("on", "c2"))
+
+
+def test_a_region_beyond_the_reach_ball_rules_out_every_such_place():
+    """blind22 p05: `(place bottle far)` was refused, proved, in 7 of 20 skeletons; the
+    result now names what it rules out, so the search drops every such place."""
+    from tampcli.optimize.keyframe_stage import beyond_reach
+
+    folder = ROOT / "problems" / "blind22" / "p05"
+    with lowered_folder(folder, "p05", ops("(pick bottle)", "(place bottle far)")) as problem:
+        why, impossible = beyond_reach(problem)
+        assert "region far is" in why and "beyond the arm's reach for bottle" in why
+        assert impossible == ("place", "bottle", ("on", "far"))
+        out = solve(problem, "final")
+        assert out.proved and out.impossible == impossible
+    with lowered_folder(folder, "p05", ops("(pick vase)", "(place vase goal)")) as problem:
+        why, impossible = beyond_reach(problem)
+        assert "(pick vase): vase stands" in why and impossible is None
+    with lowered_folder(folder, "p05", ops("(pick bottle)", "(place bottle side)")) as problem:
+        assert beyond_reach(problem) is None
