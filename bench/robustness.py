@@ -158,6 +158,12 @@ BLIND21 = {"p01": ("a bar along a board turned 35 degrees, a sphere (domain cons
            "p04": ("a can on a block on a drum, per-object costs (xArm6)", 4),
            "p05": ("a cube onto a tall stack at the reach limit (IPC blocks world)", 2),
            "p06": ("a crate pushed along a kerb into a corner, a cube in the way (KUKA)", 3)}
+BLIND22 = {"p01": ("a box and a can side by side in one spot, the box turned", 4),
+           "p02": ("a tin in the corner of a three-walled bin, a negative goal (KUKA)", 2),
+           "p03": ("a puck pushed through a gap between two posts (planar)", 1),
+           "p04": ("unstack, then move the bottom one; a disjunctive goal (xArm6)", 4),
+           "p05": ("a bottle blocking only the hand's approach; a distractor out of reach", 4),
+           "p06": ("snug sockets: a box turned 30 degrees, a peg with 1 mm (KUKA)", 4)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -179,7 +185,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind10", BLIND10), ("blind11", BLIND11), ("blind12", BLIND12),
             ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("blind16", BLIND16),
             ("blind17", BLIND17), ("blind18", BLIND18), ("blind19", BLIND19),
-            ("blind20", BLIND20), ("blind21", BLIND21),
+            ("blind20", BLIND20), ("blind21", BLIND21), ("blind22", BLIND22),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

@@ -282,6 +282,13 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
                           deadline) as pool:
             result = parallel_branch_and_bound(skeletons, pool, evaluate, searching, **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
+    # What was learned, by name (blind22 DOC_GAPS 7: the counts alone left a user
+    # guessing which body the search came to move first).
+    result.stats["learned"] = sorted(f"{b.body} moved before {b.action}"
+                                     for b in source.blockers)
+    result.stats["proved_first_moves"] = sorted(f"{b.body} moved before {b.action}"
+                                                for b in source.proved)
+    result.stats["suspected"] = sorted(source.suspects)
     evaluate.deadline = deadline
     result = eliminate_useless(result, evaluate,
                                lambda ops, i: without_step(inputs.task, ops, i),

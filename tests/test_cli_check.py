@@ -269,3 +269,13 @@ def test_a_turned_robot_base_is_shown_with_its_yaw(cli):
     base = json.loads(cli("check", GEO / "domain.pddl", GEO / "p01.pddl",
                           "--json").out)["scene"]["robot"]["base"]
     assert base == [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0]
+
+
+def test_check_warns_of_an_object_beyond_the_arms_reach(cli):
+    """blind22 p05's vase stands 1.14 m from the Panda's shoulder (its reach ball: 0.95 m);
+    the distractor's region is no goal, so only the object's own warning tells."""
+    folder = ROOT / "problems" / "blind22" / "p05"
+    run = cli("check", folder / "domain.pddl", folder / "p05.pddl")
+    assert run.code == 0
+    warned = [line for line in run.err.splitlines() if "beyond its reach" in line]
+    assert len(warned) == 1 and "object 'vase'" in warned[0], run.err

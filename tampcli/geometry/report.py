@@ -155,7 +155,30 @@ def _reach_warnings(world, scene, goal_names: set[str]) -> list[str]:
         if gap > reach:
             out.append(f"goal region {region.name!r} is {gap:.2f} m from the robot's shoulder, "
                        f"beyond its reach of about {reach:.2f} m")
+    if scene.robot.model == "planar":
+        return out
+    shoulder, reach = _shoulder_and_reach(world)
+    for body in scene.bodies:
+        if body.fixed:
+            continue
+        gap = float(np.linalg.norm(body.matrix[:3, 3] - shoulder))
+        if gap > reach + _half_diagonal(body):
+            out.append(f"object {body.name!r} stands {gap:.2f} m from the robot's shoulder, "
+                       f"beyond its reach of {reach:.2f} m: it cannot be picked where it "
+                       f"stands (a proof: `solve` drops those picks before any skeleton)")
     return out
+
+
+def _half_diagonal(body) -> float:
+    """The radius of a body's bounding sphere about its origin (a generous one for a
+    mesh or URDF body: nothing is proved of those here)."""
+    if body.shape == "box":
+        return 0.5 * float(np.linalg.norm(body.size))
+    if body.shape == "cylinder":
+        return float(np.hypot(body.size[0], body.size[1] / 2))
+    if body.shape == "sphere":
+        return float(body.size[0])
+    return math.inf
 
 
 def _half_height(body) -> float:
