@@ -218,7 +218,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
         from tampcli.bnb.eliminate import ELIMINATION_SHARE, eliminate_useless
-        from tampcli.bnb.lessons import first_move_proofs, teacher
+        from tampcli.bnb.lessons import first_move_proofs, named_lessons, teacher
         from tampcli.geometry.reach import reach_ball
         from tampcli.optimize.bodies import body_info
         from tampcli.search.eliminate import without_step
@@ -282,13 +282,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
                           deadline) as pool:
             result = parallel_branch_and_bound(skeletons, pool, evaluate, searching, **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})
-    # What was learned, by name (blind22 DOC_GAPS 7: the counts alone left a user
-    # guessing which body the search came to move first).
-    result.stats["learned"] = sorted(f"{b.body} moved before {b.action}"
-                                     for b in source.blockers)
-    result.stats["proved_first_moves"] = sorted(f"{b.body} moved before {b.action}"
-                                                for b in source.proved)
-    result.stats["suspected"] = sorted(source.suspects)
+    result.stats.update(named_lessons(source))
     evaluate.deadline = deadline
     result = eliminate_useless(result, evaluate,
                                lambda ops, i: without_step(inputs.task, ops, i),

@@ -163,3 +163,14 @@ def _beyond(task, modes, scene, infos, pushed: str, wall) -> list[Blocker]:
                 and line_meets(info.pose[:2], to, wall, clearance):
             found.append(Blocker(obj, op.name))
     return found
+
+
+def named_lessons(source) -> dict[str, list[str]]:
+    """What `source` (a LearningSource) learned, by name, for the solution's stats
+    (blind22: the counts alone left a user guessing which body the search came to
+    move first)."""
+    def words(found):
+        return sorted(f"{b.body} moved before {b.action}" for b in found)
+
+    return {"learned": words(source.blockers), "proved_first_moves": words(source.proved),
+            "suspected": sorted(source.suspects)}

@@ -6,7 +6,7 @@ from types import SimpleNamespace
 
 import pytest
 
-from tampcli.bnb.lessons import first_move_proofs, teacher
+from tampcli.bnb.lessons import first_move_proofs, named_lessons, teacher
 from tampcli.geometry.reach import reach_ball
 from tampcli.geometry.world import World
 from tampcli.optimize.bodies import body_info
@@ -83,6 +83,11 @@ def test_the_proofs_leave_the_pick_and_place_plans(s04):
     first = next(source)
     assert "(push box2 home2 goal2 bench)" not in first.names
     assert first.cost > 8  # the four pushes (cost 8) are gone
+    named = named_lessons(source)  # the solution's stats name them
+    assert "box2 moved before (push box2 home2 goal2 bench)" in named["proved_first_moves"]
+    assert named["learned"] == [] and named["suspected"] == []
+    source.learn(Blocker("crate1", "(push box2 home2 goal2 bench)"))
+    assert named_lessons(source)["learned"] == ["crate1 moved before (push box2 home2 goal2 bench)"]
 
 
 def test_the_teacher_suspects_a_push_into_a_wall_and_a_drag_but_not_a_pick(s04):
