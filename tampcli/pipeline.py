@@ -256,7 +256,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
         source.require_moved(first_move_proofs(
             inputs.task, modes, inputs.scene, {n: infos[n] for n in movable},
             options.optimize, reach_ball(geometry.world)))
-    learn = teacher(source, inputs.task, modes, movable, inputs.scene, infos)
+    learn = teacher(source, inputs.task, modes, movable, inputs.scene, infos, evaluate.rows)
 
     def heard(event) -> None:
         # With an answer the NLPs stop where the search does: the reserve is action
@@ -329,6 +329,17 @@ class _Evaluator:
     def relaxed(self, ops):
         """The prefix's relaxed bound (optimize/relaxed.py), None off the planar robot."""
         return self.relaxed_bound(self._lowered(ops))
+
+    def rows(self, result) -> tuple:
+        """bnb/violations.violated_rows of a failed keyframe result of a skeleton this
+        evaluator lowered (() otherwise: another stage, or a worker's skeleton)."""
+        from tampcli.bnb.violations import violated_rows
+        from tampcli.optimize.grips import Kinematics
+
+        problem = self.lowered.get(tuple(result.names))
+        if problem is None or result.stage != "keyframes" or result.solved:
+            return ()
+        return violated_rows(problem, result, Kinematics(self.geometry.world))
 
     def violated(self, ops, result) -> str | None:
         """The rows a failed keyframe stage left violated, by action (bnb/violations.py)."""

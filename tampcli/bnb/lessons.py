@@ -8,8 +8,10 @@ before" (`LearningSource.require_moved`).
 
 Then three lessons of a failed stage, each read off the stage's result:
 
-- a body in the way (its worst row names a movable body: optimize/blockers.py)
-  becomes a learned precondition: the skeletons that move it first come next;
+- a body in the way (its worst row names a movable body: optimize/blockers.py;
+  or, a keyframe failure's worst row naming none, a violated collision row of
+  the same action does) becomes a learned precondition: the skeletons that move
+  it first come next;
 - a push (a kind that moves within one face's friction cone) that ran into a
   body that never moves, or out of every cone, or into a blocker already
   learned (moved, and into the way), or whose footprint stayed out of its
@@ -89,11 +91,13 @@ _OUTSIDE = ": footprint outside region "
 
 
 def teacher(source, task, modes, movable: frozenset[str], scene=None,
-            infos=None) -> Callable[[Any], None]:
+            infos=None, rows_of=None) -> Callable[[Any], None]:
     """`learn(result)` for branch and bound: `source` a LearningSource over `task`.
     With the planar robot's `scene` and every body's BodyInfo (`infos`), a push that
     ran into a fixed body also orders the other pushes of its object whose straight
-    line from the object's start crosses that body after a move of the object."""
+    line from the object's start crosses that body after a move of the object.
+    `rows_of(result)`: the rows a failed keyframe stage left violated
+    (bnb/violations.Violation, worst first), read where its worst row names no body."""
 
     def matches(op, action: str, obj: str, role) -> bool:
         if op.action != action:
@@ -112,6 +116,8 @@ def teacher(source, task, modes, movable: frozenset[str], scene=None,
     def learn(result) -> None:
         worst = getattr(result, "worst_constraint", None)
         blocker = blocker_of(worst, movable)
+        if blocker is None and rows_of is not None:
+            blocker = _pressing(result, worst, rows_of, movable)
         again = blocker is not None and not source.learn(blocker)
         # A push (within one face's cone) that runs into a wall, or out of every cone, or
         # into a body it was already known to need moved first (moving it did not help:
@@ -138,6 +144,23 @@ def teacher(source, task, modes, movable: frozenset[str], scene=None,
                 op.name for op in task.operators if matches(op, *impossible)))
 
     return learn
+
+
+def _pressing(result, worst, rows_of, movable) -> Blocker | None:
+    """A movable body the failing action's own rows collide with, where its worst row
+    names none: the NLP gave up a little on the hand's tilt or contact to keep out of
+    that body (blind22 p05: `(pick cube): tool tilted by 1.0 deg`, the wrist 1 cm into
+    the bottle beside the cube; the bottle was never learned, and the 4-action
+    skeletons came in cost order). The same lesson as a worst row naming it."""
+    action = action_of(worst)
+    if action is None or getattr(result, "stage", None) != "keyframes":
+        return None
+    for row in rows_of(result):
+        if row.step == action:
+            found = blocker_of(f"{row.step}: {row.words}", movable)
+            if found is not None:
+                return found
+    return None
 
 
 def _beyond(task, modes, scene, infos, pushed: str, wall) -> list[Blocker]:

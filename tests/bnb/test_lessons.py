@@ -187,3 +187,29 @@ def test_an_arms_push_is_not_suspected_for_a_link_against_a_fixed_body(s04):
     learn(SimpleNamespace(worst_constraint="(push box3 home3 goal2 bench): overlaps box2 "
                                            "by 0.5 cm"))
     assert not [h for h in heard if h[0] == "suspect"]
+
+
+def test_a_keyframe_failure_naming_no_body_teaches_the_body_its_action_collides_with():
+    """blind22 p05: `(pick cube): tool tilted by 1.0 deg`, the wrist 1 cm into the bottle
+    beside the cube at that point: the bottle is learned, as if the row had named it."""
+    from tampcli.bnb.violations import Violation
+
+    learned = []
+    source = SimpleNamespace(learn=lambda *b: learned.extend(b) or True,
+                             forbid_operators=lambda names: None)
+    task = SimpleNamespace(operators=())
+    rows = (Violation("(pick cube)", "tool tilted by 1 deg", 0.018),
+            Violation("(place cube goal)", "collision panda_hand vs vase (margin 1 mm) by 2 cm",
+                      0.02),
+            Violation("(pick cube)", "collision panda_link7 vs bottle (margin 1 mm) by 1 cm",
+                      0.010))
+    learn = teacher(source, task, None, frozenset({"cube", "bottle", "vase"}),
+                    rows_of=lambda result: rows)
+    failed = SimpleNamespace(stage="keyframes", worst_constraint="(pick cube): tool tilted "
+                             "by 1.0 deg", impossible=None)
+    learn(failed)
+    assert learned == [Blocker("bottle", "(pick cube)")]  # not the vase: another action's
+    learned.clear()
+    learn(SimpleNamespace(stage="path", worst_constraint=failed.worst_constraint,
+                          impossible=None))
+    assert learned == []
