@@ -71,7 +71,7 @@ def push_entry(problem, step, choice, t) -> dict:
     entry = {"action": step.name, "object": step.obj, "family": step.kind.name, "face": face,
              "pusher": pusher, "offset": None if t is None else float(t)}
     if not problem.planar:
-        entry["fingers"] = "one" if choice.finger else "both"
+        entry["fingers"] = "front" if choice.crosswise else ("one" if choice.finger else "both")
     return entry
 
 
@@ -82,9 +82,10 @@ def grasp_words(entry: dict) -> str:
     head = f"{entry['action']}: {entry.get('family', '?')}"
     if "pusher" in entry:
         one = entry.get("fingers") == "one"
+        down = {"one": "one finger's side", "front": "its front finger's side (the other "
+                "behind it)"}.get(entry.get("fingers"), "its fingers' side")
         pusher = {"rim": "the disk's rim",
-                  "down": "the hand down, " + ("one finger's side" if one
-                                               else "its fingers' side"),
+                  "down": "the hand down, " + down,
                   "level": "the hand level, " + ("one fingertip" if one
                                                  else "its fingertips")
                   }.get(entry.get("pusher"), "?")

@@ -31,6 +31,9 @@ class GripChoice:
     # +y / -y side, centred on the contact (a face narrower than the fingers' spread)
     finger: int = 0
     shift: float | None = None  # push (arm), one finger: its contact along the tool's y, measured
+    # push (arm), hand down: the fingers one behind the other along the face's normal,
+    # the front one's outer side on the face (a narrow object among neighbours)
+    crosswise: bool = False
 
 
 NO_CHOICE = GripChoice()

@@ -75,3 +75,25 @@ def test_a_can_pushed_by_one_finger_keeps_inside_the_cone_verify_judges_by():
         moved = np.array(out.object_poses["can"][-1][:2]) - start[:2, 3]
         cos = inward @ moved / np.linalg.norm(inward) / np.linalg.norm(moved)
         assert math.degrees(math.acos(cos)) <= math.degrees(math.atan(NLP_FRICTION)) + 0.5
+
+
+def test_a_can_between_tall_neighbours_is_pushed_by_the_front_finger_the_other_behind(
+        tmp_path):
+    """blind23 p03 with its neighbours 16 cm tall: a one-finger hand, spread along the
+    row, has its knuckles in a neighbour (4.3 cm); the fingers one behind the other,
+    the hand no wider than a finger across the row, pass."""
+    folder = P08.parents[1] / "blind23" / "p03"
+    for name in ("domain.pddl", "modes.toml", "p03.pddl"):
+        (tmp_path / name).write_text((folder / name).read_text())
+    scene = (folder / "p03.scene.toml").read_text()
+    for y in ("0.075", "-0.075"):
+        scene = scene.replace(f"size = [0.03, 0.08]\npose = [0.30, {y}, 0.04]",
+                              f"size = [0.03, 0.16]\npose = [0.30, {y}, 0.08]")
+    assert scene.count("0.16]") == 2
+    (tmp_path / "p03.scene.toml").write_text(scene)
+    with lowered_folder(tmp_path, "p03", ops("(push soda row-mid goal)")) as problem:
+        out = solve(problem, "path")
+        assert out.status == "solved", out.worst_constraint
+        assert out.choices[0].crosswise
+        (entry,) = out.grasp_report
+        assert entry["fingers"] == "front" and entry["pusher"] == "down"

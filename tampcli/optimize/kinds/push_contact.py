@@ -159,6 +159,18 @@ def arm_face_grip(face: Face, reach: float | None = None, shift: float = 0.0) ->
                     tuple(G @ face.tangent), reach)
 
 
+def cross_face_grip(face: Face, reach: float) -> FaceGrip:
+    """The arm's tool pointing down, its y axis (the closing axis) into the face: the
+    open fingers one behind the other, the front one's outer side against the face
+    at the centre's height, its width across it. `reach`: tool origin to the object's
+    centre (the front finger's far side and CONTACT_GAP beyond the face, measured as
+    arm_face_grip's)."""
+    tool_in_obj = np.column_stack([face.tangent, face.normal, [0.0, 0.0, -1.0]])
+    G = tool_in_obj.T
+    return FaceGrip((0.0, 0.0, 0.0), tuple(map(tuple, G)), tuple(G @ face.normal),
+                    tuple(G @ face.tangent), reach)
+
+
 def level_lift(info) -> float | None:
     """How far above the object's centre a level hand's axis runs: high enough for the
     hand to clear the support, low enough for the fingertips to meet the face; None
