@@ -59,6 +59,23 @@ ARMS = {
 FINGERS = tuple(j for arm in ARMS.values() for j in arm.fingers)
 
 
+def _mimics(urdf: str) -> dict[str, tuple[str, float, float]]:
+    """joint -> (the joint it mimics, multiplier, offset), read from the URDF's XML."""
+    import xml.etree.ElementTree as ET
+
+    try:
+        root = ET.parse(urdf).getroot()
+    except (OSError, ET.ParseError):
+        return {}
+    out = {}
+    for joint in root.iter("joint"):
+        m = joint.find("mimic")
+        if m is not None and m.get("joint"):
+            out[joint.get("name")] = (m.get("joint"), float(m.get("multiplier", 1.0)),
+                                      float(m.get("offset", 0.0)))
+    return out
+
+
 def pose_of(v) -> tuple[list[float], list[float]]:
     v = [float(x) for x in v]
     if len(v) == 3:
@@ -150,6 +167,7 @@ class Replay:
         self.arm = ARMS.get(self.model, ARMS["panda"])
         urdf = str(folder / robot["urdf"]) if "urdf" in robot else self.arm.urdf
         self.robot = _load_urdf(urdf, pos, quat, self.c)
+        self.mimics = _mimics(urdf)
         self.links = {-1: "base"}
         self.base_links = {-1}
         self.joint_index, self.limits, parent = {}, {}, {}
@@ -190,6 +208,14 @@ class Replay:
             return
         for n, v in zip(names, q, strict=True):
             pb.resetJointState(self.robot, self.joint_index[n], v, physicsClientId=self.c)
+        # A joint the URDF makes mimic a given one follows it (the KUKA's right finger
+        # mimics its left: a solution gives the left one's column only).
+        given = dict(zip(names, q, strict=True))
+        for joint, (leader, multiplier, offset) in self.mimics.items():
+            if leader in given and joint not in given and joint in self.joint_index:
+                pb.resetJointState(self.robot, self.joint_index[joint],
+                                   multiplier * float(given[leader]) + offset,
+                                   physicsClientId=self.c)
         if open_fingers:
             for f, value in self.arm.fingers.items():
                 if f in self.joint_index:

@@ -218,3 +218,18 @@ def test_a_goal_atom_is_read_by_the_roles_of_the_action_that_adds_it(dx, holds):
         replay.close()
     assert (found == []) == holds, found
     assert plain  # read as (pred x y), the jar would have to lie on the lid
+
+
+def test_a_finger_the_urdf_makes_mimic_a_given_one_follows_it():
+    """A KUKA solution gives gripper_left_joint's column only; the right finger mimics it
+    (its URDF). Left where PyBullet loaded it, the right finger stood in blind22 p02's tin
+    (20 mm) at a narrowed grasp the product had judged right."""
+    replay = Replay(ROOT / "problems" / "blind22" / "p02" / "p02.scene.toml")
+    try:
+        names = [f"lbr_iiwa_joint_{i}" for i in range(1, 8)] + ["gripper_left_joint"]
+        replay.set_q(names, [0.0] * 7 + [0.026], False)
+        right = replay.joint_index["gripper_right_joint"]
+        assert pb.getJointState(replay.robot, right, physicsClientId=replay.c)[0] == \
+            pytest.approx(0.026)
+    finally:
+        replay.close()
