@@ -164,6 +164,12 @@ BLIND22 = {"p01": ("a box and a can side by side in one spot, the box turned", 4
            "p04": ("unstack, then move the bottom one; a disjunctive goal (xArm6)", 4),
            "p05": ("a bottle blocking only the hand's approach; a distractor out of reach", 4),
            "p06": ("snug sockets: a box turned 30 degrees, a peg with 1 mm (KUKA)", 4)}
+BLIND23 = {"p01": ("a cube pushed along a kerb, then picked onto a shelf", 3),
+           "p02": ("a crate too wide to grip, pushed from two faces (KUKA)", 2),
+           "p03": ("a can pushed out of a row of three (xArm6)", 1),
+           "p04": ("a block placed between two others; the base moved and turned", 2),
+           "p05": ("the middle block of a tower of three to the goal (KUKA)", 4),
+           "p06": ("a sphere pushed into a gap narrower than the disk (planar)", 1)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -186,6 +192,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("blind16", BLIND16),
             ("blind17", BLIND17), ("blind18", BLIND18), ("blind19", BLIND19),
             ("blind20", BLIND20), ("blind21", BLIND21), ("blind22", BLIND22),
+            ("blind23", BLIND23),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
