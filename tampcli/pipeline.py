@@ -24,9 +24,9 @@ from tampcli.optimize.options import OptimizeOptions
 from tampcli.pddl import ast
 from tampcli.pddl.load import load
 from tampcli.solution import Phase, Solution
+from tampcli.stage_evaluator import Geometry, StageEvaluator
 
 if TYPE_CHECKING:  # numpy, pybullet and FCL behind these: imported only for a scene
-    from tampcli.geometry.collision import CollisionChecker
     from tampcli.geometry.model import Scene
     from tampcli.geometry.tomlsrc import TomlSource
     from tampcli.geometry.world import World
@@ -152,7 +152,7 @@ def solving(paths: InputPaths, options: SolveOptions = SolveOptions(),
             checker = CollisionChecker(world)
         with timers.stage("scene"):
             check_start_state(world, checker, inputs.scene_source)
-        solution = _solve_geometric(inputs, _Geometry(world, checker), options, timers,
+        solution = _solve_geometric(inputs, Geometry(world, checker), options, timers,
                                     on_event)
         yield Solved(solution, inputs, world)
 
@@ -206,15 +206,7 @@ def _solve_symbolic(inputs: ParsedInputs, options: SolveOptions, timers: Timers)
                     symbolic_weight=weight, objective=weight * plan.cost)
 
 
-@dataclass(frozen=True)
-class _Geometry:
-    """The solve's one World and the CollisionChecker over it."""
-
-    world: World
-    checker: CollisionChecker
-
-
-def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
+def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOptions,
                      timers: Timers, on_event: Callable[[Event], None] | None) -> Solution:
     with timers.stage("setup"):
         from tampcli.bnb.eliminate import ELIMINATION_SHARE, eliminate_useless
@@ -233,7 +225,7 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
         reserve = ELIMINATION_SHARE * options.bnb.time_limit \
             if math.isfinite(options.bnb.time_limit) else 0.0
         searching = dataclasses.replace(options.bnb, reserve=reserve)
-        evaluate = _Evaluator(inputs, geometry, options, deadline)
+        evaluate = StageEvaluator(inputs, geometry, options, deadline)
     modes = inputs.modes
     movable = frozenset(geometry.world.movable_names)
 
@@ -296,60 +288,6 @@ def _solve_geometric(inputs: ParsedInputs, geometry: _Geometry, options: SolveOp
     return _solution(inputs, geometry.world, options, result, _stats(timers, result.stats))
 
 
-class _Evaluator:
-    """`evaluate(ops, stage, warm)` for branch and bound: lowers each skeleton once
-    and solves a stage within what is left of the solve's time."""
-
-    def __init__(self, inputs: ParsedInputs, geometry: _Geometry, options: SolveOptions,
-                 deadline: float):
-        from tampcli.optimize.problem import lower
-        from tampcli.optimize.relaxed import relaxed_bound
-        from tampcli.optimize.solve import solve as solve_stage
-
-        self.inputs, self.geometry, self.deadline = inputs, geometry, deadline
-        self.options = options.optimize
-        self.lower, self.solve_stage, self.relaxed_bound = lower, solve_stage, relaxed_bound
-        self.lowered: dict[tuple[str, ...], object] = {}
-
-    def _lowered(self, ops):
-        names = tuple(op.name for op in ops)
-        if names not in self.lowered:
-            self.lowered[names] = self.lower(
-                ops, self.inputs.scene, self.inputs.modes, self.geometry.world, self.options,
-                domain=self.inputs.domain, checker=self.geometry.checker)
-        return self.lowered[names]
-
-    def __call__(self, ops, stage, warm, cutoff=None):
-        remaining = max(self.deadline - time.perf_counter(), 0.5)
-        options = self.options if remaining >= self.options.time_limit else \
-            dataclasses.replace(self.options, time_limit=remaining)
-        return self.solve_stage(self._lowered(ops), stage, warm=warm, options=options,
-                                cutoff=cutoff)
-
-    def relaxed(self, ops):
-        """The prefix's relaxed bound (optimize/relaxed.py), None off the planar robot."""
-        return self.relaxed_bound(self._lowered(ops))
-
-    def rows(self, result) -> tuple:
-        """bnb/violations.violated_rows of a failed keyframe result of a skeleton this
-        evaluator lowered (() otherwise: another stage, or a worker's skeleton)."""
-        from tampcli.bnb.violations import violated_rows
-        from tampcli.optimize.grips import Kinematics
-
-        problem = self.lowered.get(tuple(result.names))
-        if problem is None or result.stage != "keyframes" or result.solved:
-            return ()
-        return violated_rows(problem, result, Kinematics(self.geometry.world))
-
-    def violated(self, ops, result) -> str | None:
-        """The rows a failed keyframe stage left violated, by action (bnb/violations.py)."""
-        from tampcli.bnb.violations import by_action, violated_rows
-        from tampcli.optimize.grips import Kinematics
-
-        rows = violated_rows(self._lowered(ops), result, Kinematics(self.geometry.world))
-        return by_action(rows, tuple(op.name for op in ops))
-
-
 def _worker_parts(paths: InputPaths, options: SolveOptions, deadline: float):
     """What a skeleton_pool worker builds once, in its own process: (an evaluator
     over a World and CollisionChecker of its own, the operators by name, which are
@@ -359,7 +297,7 @@ def _worker_parts(paths: InputPaths, options: SolveOptions, deadline: float):
 
     inputs = read_inputs(paths, Timers())
     world = World(inputs.scene, visuals=False)
-    evaluate = _Evaluator(inputs, _Geometry(world, CollisionChecker(world)), options, deadline)
+    evaluate = StageEvaluator(inputs, Geometry(world, CollisionChecker(world)), options, deadline)
     modes = inputs.modes
     return (evaluate, {op.name: op for op in inputs.task.operators},
             lambda op: modes.get_mode(op.action).geometric)

@@ -19,7 +19,7 @@ LAYERS = (
     ("bnb",),
     ("minlp",),
     ("render",),
-    ("pipeline", "skeleton_pool"),
+    ("pipeline", "stage_evaluator", "skeleton_pool"),
     ("batch",),
     ("cli", "__main__"),
 )

@@ -80,8 +80,7 @@ def _out_of_reach(task, modes, infos, ball) -> frozenset[Blocker]:
         info = infos.get(mode.bind(op.args).get("object"))
         if info is None:
             continue
-        slack = float(np.linalg.norm(info.half))
-        if float(np.linalg.norm(np.asarray(info.pose[:3]) - centre)) > reach + slack:
+        if float(np.linalg.norm(np.asarray(info.pose[:3]) - centre)) > reach + info.sphere:
             found.add(Blocker(mode.bind(op.args)["object"], op.name))
     return frozenset(found)
 

@@ -46,6 +46,12 @@ class BodyInfo:
         return self.half[0] if self.disk else math.hypot(self.half[0], self.half[1])
 
     @property
+    def sphere(self) -> float:
+        """Radius of the sphere about the centre that holds the whole body (its half
+        diagonal): a tool holding the body is within it of the centre."""
+        return math.sqrt(self.half[0] ** 2 + self.half[1] ** 2 + self.half[2] ** 2)
+
+    @property
     def top(self) -> float:
         return self.pose[2] + self.half[2]
 

@@ -59,7 +59,7 @@ def beyond_reach(problem) -> tuple[str, tuple | None] | None:
         info = problem.bodies.get(step.obj)
         if info is None:
             continue
-        slack = math.sqrt(info.half[0] ** 2 + info.half[1] ** 2 + info.half[2] ** 2)
+        slack = info.sphere
         if step.held_after == step.obj and step.held_before is None and step.obj not in moved:
             gap = float(np.linalg.norm(np.asarray(info.pose[:3]) - centre))
             if gap > reach + slack:

@@ -99,21 +99,15 @@ def test_a_real_prefix_passes_again_on_the_answers_own_motions():
     from tampcli.bnb.eliminate import _truncated
     from tampcli.geometry.collision import CollisionChecker
     from tampcli.geometry.world import World
-    from tampcli.pipeline import (
-        InputPaths,
-        SolveOptions,
-        Timers,
-        _Evaluator,
-        _Geometry,
-        read_inputs,
-    )
+    from tampcli.pipeline import InputPaths, SolveOptions, Timers, read_inputs
+    from tampcli.stage_evaluator import Geometry, StageEvaluator
 
     root = Path(__file__).resolve().parents[2]
     inputs = read_inputs(InputPaths(str(root / "domains" / "arm-pick-place" / "domain.pddl"),
                                     str(root / "problems" / "arm-pick-place" / "p01.pddl")),
                          Timers())
     with World(inputs.scene, visuals=False) as world:
-        evaluate = _Evaluator(inputs, _Geometry(world, CollisionChecker(world)), SolveOptions(),
+        evaluate = StageEvaluator(inputs, Geometry(world, CollisionChecker(world)), SolveOptions(),
                               time.perf_counter() + 120)
         ops = {op.name: op for op in inputs.task.operators}
         plan = (ops["(pick a start)"], ops["(place a goal)"], ops["(pick a goal)"])

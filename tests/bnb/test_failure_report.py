@@ -8,8 +8,9 @@ from pathlib import Path
 import pytest
 
 from tampcli.bnb import BnBOptions, branch_and_bound
-from tampcli.pipeline import InputPaths, SolveOptions, Timers, _Evaluator, _Geometry, read_inputs
+from tampcli.pipeline import InputPaths, SolveOptions, Timers, read_inputs
 from tampcli.pipeline import solve as solve_paths
+from tampcli.stage_evaluator import Geometry, StageEvaluator
 from tests.bnb.test_bnb import R, Source, table_evaluator
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -70,7 +71,7 @@ def test_the_violated_rows_of_a_real_keyframe_failure_start_with_the_reported_on
     from tampcli.optimize.grips import Kinematics
 
     with World(inputs.scene) as world:
-        evaluate = _Evaluator(inputs, _Geometry(world, CollisionChecker(world)), SolveOptions(),
+        evaluate = StageEvaluator(inputs, Geometry(world, CollisionChecker(world)), SolveOptions(),
                               time.perf_counter() + 60)
         ops = {op.name: op for op in inputs.task.operators}
         plan = (ops["(pick target nook)"], ops["(place target goal)"])

@@ -23,6 +23,7 @@ from tampcli.geometry.shapes import Shape
 from tampcli.geometry.world import _measure
 from tampcli.geometry.world._arm import FingerJoints, closing_fraction, load_arm, tool_frame
 from tampcli.geometry.world._dynamics import Dynamics
+from tampcli.geometry.world._gripper import GripperQueries
 from tampcli.geometry.world._load import load_body, make_planar
 from tampcli.geometry.world._pybullet import pybullet
 
@@ -30,7 +31,7 @@ PANDA_FINGERS = PANDA.fingers.joints
 PLANAR_LINKS = ("planar_x", "planar_body")
 
 
-class World:
+class World(GripperQueries):
     """A scene in PyBullet; use as a context manager or call `close()`.
 
     Robots: an arm (a built-in one of geometry/arms.py, e.g. the Panda with
@@ -170,66 +171,6 @@ class World:
     @property
     def body_names(self) -> tuple[str, ...]:
         return tuple(b.name for b in self.scene.bodies)
-
-    @property
-    def finger_names(self) -> tuple[str, ...]:
-        """The gripper's finger joints (not in q: they open and close, never plan)."""
-        return self._fingers.names if self._fingers else ()
-
-    @property
-    def finger_range(self) -> tuple[tuple[float, float], ...]:
-        """(open, closed) value of each joint of `finger_names`."""
-        if self._fingers is None:
-            return ()
-        k = len(self._fingers.names)
-        return tuple(zip(self._fingers.open[:k], self._fingers.closed[:k], strict=True))
-
-    def finger_values(self, named) -> tuple[float, ...]:
-        """Every finger joint's value (`finger_links`' order) from `finger_names`' (a
-        file's columns): a joint that mimics one goes the same fraction of its travel."""
-        return self._fingers.expand(named)
-
-    @property
-    def finger_links(self) -> tuple[int, ...]:
-        """Chain index of the link each finger joint moves, in the order of
-        `set_state`'s `fingers` (the named joints first, then those mimicking them)."""
-        if self._fingers is None:
-            return ()
-        by_pb = {link.pb_index: i for i, link in enumerate(self.chain.links)}
-        return tuple(by_pb[j] for j in self._fingers.pb)
-
-    @property
-    def gripper_opening(self) -> float | None:
-        """Gap (m) between the open fingers along the tool's y axis, near the tool
-        origin: the widest object they close on. None without fingers."""
-        return self._gripper[0] if self._gripper else None
-
-    def gripper_at(self, t: float) -> tuple[tuple[float, ...], float, float] | None:
-        """(finger joint values in `finger_links`' order, opening, fingertip depth) with
-        the fingers a fraction t of the way from open (0) to closed (1), measured as
-        `gripper_opening` and `fingertip_depth` are. None without fingers."""
-        if self._fingers is None:
-            return None
-        values = self._fingers.at(float(t))
-        size = _measure.gripper_size(self._pb, self._client, self._robot, self._fingers,
-                                     self.chain, self._tool_index, self.start,
-                                     values=dict(zip(self.finger_links, values, strict=True)))
-        if size is None:
-            return None
-        return values, size[0], size[1]
-
-    @property
-    def finger_span(self) -> tuple[float, float] | None:
-        """(inner, outer): how far the open fingers' near and far sides stand from the
-        tool's axis along its y axis, near the tool origin (the Panda's: 4.0 and 5.3
-        cm). None without fingers."""
-        return self._gripper[2] if self._gripper else None
-
-    @property
-    def fingertip_depth(self) -> float | None:
-        """How far (m) the open fingertips reach beyond the tool origin along the
-        tool's z axis (the Panda's: 1 cm). None without fingers."""
-        return self._gripper[1] if self._gripper else None
 
     @property
     def movable_names(self) -> tuple[str, ...]:

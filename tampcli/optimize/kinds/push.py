@@ -234,9 +234,9 @@ class Push(ModeKind):
             # fingertips on the face) where the object is tall enough for it.
             levels = (False, True) if level_lift(info) is not None else (False,)
             span = problem.world.finger_span
+            fingers = {a: pushing_fingers(_half_width(info, a), span) for a in aligned}
             choices = [GripChoice(face=a, level=level, finger=finger)
-                       for level in levels for a in aligned
-                       for finger in pushing_fingers(_half_width(info, a), span)]
+                       for level in levels for a in aligned for finger in fingers[a]]
             # A face too narrow for both fingers may be pushed by the front finger, the
             # other behind it, the hand no wider than a finger across the face: the
             # one finger's twin stands beside the object, in a neighbour of a row
@@ -245,7 +245,7 @@ class Push(ModeKind):
             # cheaper on that can (0.32 against 1.22) but ended 2 mm inside blind14
             # p08's can on its approach, and lost blind21 p06's cube to its kerb.
             choices += [GripChoice(face=a, crosswise=True) for a in aligned
-                        if pushing_fingers(_half_width(info, a), span) != (0,)]
+                        if fingers[a] != (0,)]
             q0, choice = _clear_at_both_ends(walk, step, obj_pose, end, choices)
             q0 = _measured_touch(walk, step, obj_pose, choice, q0)
             G = transforms.pose_inverse(walk.grip_of(step).matrix(0.0))

@@ -81,20 +81,28 @@ def check_push(walk, step, touch: float) -> list[str]:
     return out
 
 
+HORIZON = 0.05  # m: farther than this from the robot counts as this far
+
+
+def _contacts(problem, obj: str, pose, qs) -> list[list]:
+    """Per row of qs, the robot's contacts with `obj` (at `pose`) within HORIZON."""
+    qs = np.atleast_2d(qs)
+    others = frozenset(n for n in problem.bodies if n != obj)
+    found = problem.checker.distances_many(qs, {obj: pose}, None, [others] * len(qs), HORIZON)
+    target = f"body:{obj}"
+    return [[c for c in contacts if target in (c.a, c.b)] for contacts in found]
+
+
 def touch_at(problem, obj: str, pose, q):
     """(clearance, where the robot touches `obj`) at q: the middle of the robot's
     points nearest it, over the links within TOUCH_BAND of the nearest (world; None
-    beyond 5 cm). Two fingers straddling a drum touch it either side: their middle
+    beyond HORIZON). Two fingers straddling a drum touch it either side: their middle
     is behind it."""
-    horizon = 0.05
-    others = frozenset(n for n in problem.bodies if n != obj)
-    (found,) = problem.checker.distances_many(np.atleast_2d(q), {obj: pose}, None,
-                                              [others], horizon)
-    target = f"body:{obj}"
-    near = [c for c in found if target in (c.a, c.b)]
+    (near,) = _contacts(problem, obj, pose, q)
     if not near:
-        return horizon, None
+        return HORIZON, None
     gap = min(c.distance for c in near)
+    target = f"body:{obj}"
     points = [c.point_b if c.a == target else c.point_a for c in near
               if c.distance <= gap + TOUCH_BAND]
     return gap, np.mean(points, axis=0)
@@ -102,11 +110,6 @@ def touch_at(problem, obj: str, pose, q):
 
 def clearance(problem, obj: str, pose, qs) -> float:
     """Smallest signed distance between the robot and `obj` (at `pose`) over the rows
-    of qs (at most 5 cm: farther counts as 5 cm)."""
-    horizon = 0.05
-    others = frozenset(n for n in problem.bodies if n != obj)
-    found = problem.checker.distances_many(np.atleast_2d(qs), {obj: pose}, None,
-                                           [others] * len(np.atleast_2d(qs)), horizon)
-    target = f"body:{obj}"
-    return min((c.distance for contacts in found for c in contacts
-                if target in (c.a, c.b)), default=horizon)
+    of qs (at most HORIZON: farther counts as that)."""
+    return min((c.distance for near in _contacts(problem, obj, pose, qs) for c in near),
+               default=HORIZON)
