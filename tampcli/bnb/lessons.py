@@ -1,7 +1,8 @@
 """What geometry teaches the skeleton source (search/learned.py).
 
 Before any skeleton, `first_move_proofs`: the actions that cannot move their
-object from its start pose whatever came before (a planar push whose object's
+object from its start pose whatever came before (a push, by the planar robot or
+an arm, whose object's
 every face's friction cone misses the target; an arm's grasp of an object
 standing beyond its reach), each a proved precondition "the object was moved
 before" (`LearningSource.require_moved`).
@@ -38,16 +39,23 @@ from tampcli.search.learned import Blocker
 
 def first_move_proofs(task, modes, scene, infos, options, ball=None) -> frozenset[Blocker]:
     """Blocker(object, action) for each ground action that cannot move its object from
-    its start pose: for the planar robot, an action of a kind that moves only within a
-    face's friction cone (ModeKind.within_cone) into a target region no face's cone
-    leads to (push_reach.first_push_blocked); for an arm, a grasp (ModeKind.fingers)
-    of an object standing beyond its reach `ball` ((centre, radius):
-    geometry/reach.reach_ball, a bound) by more than the object's bounding sphere.
-    In every skeleton, that action needs its object moved before it. `infos`: the
-    movable bodies' bodies.BodyInfo by name; `options`: optimize.options.OptimizeOptions.
-    Each (kind, object, region) is judged once."""
-    if scene.robot.model != "planar":
-        return _out_of_reach(task, modes, infos, ball)
+    its start pose: an action of a kind that moves only within a face's friction cone
+    (ModeKind.within_cone: a push, by the planar robot or an arm, judged by the same
+    per-step cone and a box's yaw held at the keyframes) into a target region no
+    face's cone leads to (push_reach.first_push_blocked); for an arm, a grasp
+    (ModeKind.fingers) of an object standing beyond its reach `ball` ((centre,
+    radius): geometry/reach.reach_ball, a bound) by more than the object's bounding
+    sphere. In every skeleton, that action needs its object moved before it.
+    `infos`: the movable bodies' bodies.BodyInfo by name; `options`:
+    optimize.options.OptimizeOptions. Each (kind, object, region) is judged once."""
+    return _off_every_cone(task, modes, scene, infos, options) | _out_of_reach(
+        task, modes, infos, ball)
+
+
+def _off_every_cone(task, modes, scene, infos, options) -> frozenset[Blocker]:
+    """The pushes first_move_proofs rules out (gen1 planar-s04's box2; blind23 p02: an
+    arm's crate whose goal lies 45 deg off every face, 2.2 s of keyframe NLP for a
+    local failure)."""
     regions = {r.name: r for r in scene.regions}
     judged: dict[tuple[str, str, str], bool] = {}
     found = set()

@@ -10,6 +10,7 @@ from __future__ import annotations
 import math
 
 from tampcli.optimize import grasp_families as F
+from tampcli.optimize.kinds.push_contact import finger_shift
 
 
 def faces(info, psi: float) -> str:
@@ -72,7 +73,22 @@ def push_entry(problem, step, choice, t) -> dict:
              "pusher": pusher, "offset": None if t is None else float(t)}
     if not problem.planar:
         entry["fingers"] = "front" if choice.crosswise else ("one" if choice.finger else "both")
+    if choice.finger and not problem.planar and t is not None:
+        # One finger: the hand's axis stands beside the contact, along the face (the
+        # tool's y is the face's tangent: push_contact.arm_face_grip, level_face_grip).
+        shift = choice.shift if choice.shift is not None else finger_shift(
+            choice.finger, problem.world.finger_span)
+        entry["axis_offset"] = float(t - shift)
+        entry["axis_side"] = _side(problem.bodies[step.obj], angle + 0.5 * math.pi
+                                   if t - shift >= 0 else angle - 0.5 * math.pi)
     return entry
+
+
+def _side(info, angle: float) -> str:
+    """A direction in the object's frame in words: a box's axis (`+y`), else degrees."""
+    if info.disk:
+        return f"{math.degrees(angle) % 360:.0f} deg"
+    return {0: "+x", 1: "+y", 2: "-x", 3: "-y"}[round(angle / (0.5 * math.pi)) % 4]
 
 
 def grasp_words(entry: dict) -> str:
@@ -91,7 +107,12 @@ def grasp_words(entry: dict) -> str:
                   }.get(entry.get("pusher"), "?")
         words = f"{entry['action']}: {pusher} on {entry['object']}'s {entry.get('face')} face"
         offset = entry.get("offset")
-        return words + ("" if offset is None else f", {100 * offset:.1f} cm off its middle")
+        words += "" if offset is None else f", {100 * offset:.1f} cm off its middle"
+        if entry.get("axis_offset") is not None:
+            words += (f", the hand's axis beside it, {100 * abs(entry['axis_offset']):.1f} cm "
+                      f"off the face's middle towards {entry['object']}'s "
+                      f"{entry['axis_side']}")
+        return words
     if entry.get("family") == "suction":
         angle = entry.get("contact_angle")
         return head + ("" if angle is None else f", contact angle {math.degrees(angle):.0f} deg")

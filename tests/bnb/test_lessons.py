@@ -74,6 +74,21 @@ def test_a_pick_of_an_object_beyond_the_arms_reach_needs_it_moved_first():
                                  OptimizeOptions()) == frozenset()  # no ball, no proof
 
 
+def test_an_arms_push_off_every_cone_from_the_start_is_proved_too():
+    """blind23 p02: the KUKA's crate, too wide to grip, whose dock lies 45 deg off
+    every face's normal from its start; its pushes toward the mid spots stay open."""
+    folder = BLIND22.parent / "blind23" / "p02"
+    inputs = read_inputs(InputPaths(str(folder / "domain.pddl"), str(folder / "p02.pddl")),
+                         Timers())
+    with World(inputs.scene) as world:
+        infos = {n: body_info(inputs.scene.body(n), world) for n in world.movable_names}
+        proofs = first_move_proofs(inputs.task, inputs.modes, inputs.scene, infos,
+                                   OptimizeOptions(), reach_ball(world))
+    assert Blocker("crate", "(push crate home dock)") in proofs
+    assert all(b.action.startswith("(push crate ") and b.action.endswith(" dock)")
+               for b in proofs)
+
+
 def test_the_proofs_leave_the_pick_and_place_plans(s04):
     inputs, infos = s04
     source = LearningSource(inputs.task, lambda t: TopK(t, loopless=True),

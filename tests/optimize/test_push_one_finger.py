@@ -52,6 +52,14 @@ def test_the_one_finger_push_passes_verify_at_the_path_stage(cube_aside):
     assert out.status == "solved", out.worst_constraint
     (entry,) = [g for g in out.grasp_report if g["object"] == "cube"]
     assert entry["fingers"] == "one" and entry["face"] == "+x"
+    # Where the report says the hand's axis stood, the tool stood: measured at the push's
+    # first keyframe, in the cube's frame (the +x face's tangent is the cube's -y).
+    info = cube_aside.bodies["cube"]
+    q0 = out.keyframes.q[cube_aside.steps[0].keyframes[0]]
+    tool = np.linalg.inv(pose_matrix(*info.pose)) @ cube_aside.world.tool_poses(q0[None])[0]
+    along = {"+y": tool[1, 3], "-y": -tool[1, 3]}[entry["axis_side"]]
+    assert along == pytest.approx(abs(entry["axis_offset"]), abs=2e-3)
+    assert abs(entry["axis_offset"]) > 0.03  # beside the 4 cm cube, not over it
 
 
 P08 = Path(__file__).resolve().parents[2] / "problems" / "blind14" / "p08"
