@@ -59,31 +59,28 @@ def test_no_proof_for_an_arm_within_its_reach():
                                  OptimizeOptions(), reach_ball(world)) == frozenset()
 
 
-def test_a_pick_of_an_object_beyond_the_arms_reach_needs_it_moved_first():
-    """blind22 p05: a vase 1.10 m out (the Panda's reach ball: 0.949 m from its
-    shoulder); each skeleton picking it cost 5 to 9 s of keyframe NLP before."""
-    folder = BLIND22 / "p05"
-    inputs = read_inputs(InputPaths(str(folder / "domain.pddl"), str(folder / "p05.pddl")),
+def _blind_proofs(folder: Path, stem: str, ball: bool = True) -> frozenset[Blocker]:
+    """first_move_proofs on a blind set's problem (folder/stem.pddl), with the arm's
+    reach ball or without."""
+    inputs = read_inputs(InputPaths(str(folder / "domain.pddl"), str(folder / f"{stem}.pddl")),
                          Timers())
     with World(inputs.scene) as world:
         infos = {n: body_info(inputs.scene.body(n), world) for n in world.movable_names}
-        proofs = first_move_proofs(inputs.task, inputs.modes, inputs.scene, infos,
-                                   OptimizeOptions(), reach_ball(world))
-        assert proofs == {Blocker("vase", "(pick vase)")}
-        assert first_move_proofs(inputs.task, inputs.modes, inputs.scene, infos,
-                                 OptimizeOptions()) == frozenset()  # no ball, no proof
+        return first_move_proofs(inputs.task, inputs.modes, inputs.scene, infos,
+                                 OptimizeOptions(), reach_ball(world) if ball else None)
+
+
+def test_a_pick_of_an_object_beyond_the_arms_reach_needs_it_moved_first():
+    """blind22 p05: a vase 1.10 m out (the Panda's reach ball: 0.949 m from its
+    shoulder); each skeleton picking it cost 5 to 9 s of keyframe NLP before."""
+    assert _blind_proofs(BLIND22 / "p05", "p05") == {Blocker("vase", "(pick vase)")}
+    assert _blind_proofs(BLIND22 / "p05", "p05", ball=False) == frozenset()  # no ball, no proof
 
 
 def test_an_arms_push_off_every_cone_from_the_start_is_proved_too():
     """blind23 p02: the KUKA's crate, too wide to grip, whose dock lies 45 deg off
     every face's normal from its start; its pushes toward the mid spots stay open."""
-    folder = BLIND22.parent / "blind23" / "p02"
-    inputs = read_inputs(InputPaths(str(folder / "domain.pddl"), str(folder / "p02.pddl")),
-                         Timers())
-    with World(inputs.scene) as world:
-        infos = {n: body_info(inputs.scene.body(n), world) for n in world.movable_names}
-        proofs = first_move_proofs(inputs.task, inputs.modes, inputs.scene, infos,
-                                   OptimizeOptions(), reach_ball(world))
+    proofs = _blind_proofs(BLIND22.parent / "blind23" / "p02", "p02")
     assert Blocker("crate", "(push crate home dock)") in proofs
     assert all(b.action.startswith("(push crate ") and b.action.endswith(" dock)")
                for b in proofs)
