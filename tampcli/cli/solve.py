@@ -215,7 +215,9 @@ def _summary(sol, ui, args) -> None:
             + (f", {stats['elimination_skeletons']} more by action elimination"
                if stats.get("elimination_skeletons") else "")
             + f"; NLP solves {stats.get('nlp_solves', 0)}")
-    for key, words in (("proved_first_moves", "proved first"), ("learned", "learned")):
+    for key, words in (("proved_first_moves", "proved before any skeleton (each action "
+                        "needs its object moved by an earlier one)"),
+                       ("learned", "learned (the skeletons moving the body first came next)")):
         if stats.get(key):
             ui.info(f"{words}: " + "; ".join(stats[key]))
     if args.out:
