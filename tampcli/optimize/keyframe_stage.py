@@ -309,19 +309,42 @@ def face_grips(problem, kfr):
     stage finds out. Nearest faces first; the face the angle is at already is
     not tried again.
     """
+    sides = _face_angles(problem, kfr)
+    for j in range(4):
+        grips = {i: faces[j] for i, faces in sides.items()}
+        if grips and any(abs(f - kfr.keyframes.grip[i]) > FACE_SAME for i, f in grips.items()):
+            yield grips
+
+
+def carry_faces(problem, kfr, failed_step: int) -> list[dict]:
+    """The planar suction grips of `kfr` (keyframes solved) with only the grip held in
+    the motion into step `failed_step` moved to another face's middle, nearest first,
+    the others kept where the keyframes have them: the carry that failed is what a
+    face changes (blind8 p04: a plug held off the middle of its east face could not
+    pass its doorway; face_grips turns every grip at once, and with the crates'
+    grips turned too no keyframes were found)."""
+    sides = _face_angles(problem, kfr)
+    held = [i for i in kfr.keyframes.grip if i < failed_step]  # the carry's: the last
+    if not held or max(held) not in sides:  # a drum has no faces to turn to
+        return []
+    s = max(held)
+    kept = {i: kfr.keyframes.grip[i] for i in sides}
+    return [{**kept, s: f} for f in sides[s] if abs(f - kept[s]) > FACE_SAME]
+
+
+def _face_angles(problem, kfr) -> dict[int, list[float]]:
+    """Per planar suction grip of `kfr`, its four faces' middles (contact angles), the
+    nearest the keyframes' angle first."""
     steps = {s.index: s for s in problem.steps}
     sides = {}
     if not kfr.keyframes:
-        return
+        return sides
     for index, t in kfr.keyframes.grip.items():
         grip = grip_of(problem, steps[index], kfr.choices)
         if isinstance(grip, SideGrip) and grip.half is not None:
             faces = [t + _wrap(grip.yaw + j * math.pi / 2 - t) for j in range(4)]
             sides[index] = sorted(faces, key=lambda f, t=t: abs(f - t))
-    for j in range(4):
-        grips = {i: faces[j] for i, faces in sides.items()}
-        if grips and any(abs(f - kfr.keyframes.grip[i]) > FACE_SAME for i, f in grips.items()):
-            yield grips
+    return sides
 
 
 def _wrap(a: float) -> float:

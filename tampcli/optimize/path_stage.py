@@ -14,6 +14,7 @@ from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.grasp_report import grasp_report
 from tampcli.optimize.hand import finger_columns, with_hand
 from tampcli.optimize.keyframe_stage import (
+    carry_faces,
     face_grips,
     keyframes,
     keyframes_with,
@@ -57,7 +58,9 @@ def path(run: Run, warm) -> TrajectoryResult:
     order = [(grips, kfr if grips is None else None) for grips in order]
     if answer is None and problem.planar and faces:
         order = _passable_first(run, warm, order, kfr.narrowed)
-    for grips, start in order:
+    carried = set()  # the failed steps whose carry's faces were tried alone
+    while order:
+        grips, start = order.pop(0)
         if result is not None and (result.solved or result.status == "bounded"
                                    or time.perf_counter() > run.deadline
                                    or _robot_in_the_way(run)):
@@ -71,6 +74,12 @@ def path(run: Run, warm) -> TrajectoryResult:
         if start.solved:
             last = _relocated(run, warm, grips, start, path_through(run, start))
             result = last if result is None or last.solved else result
+            failed = last.failed_actions
+            if problem.planar and not last.solved and failed and failed not in carried:
+                # The carry into the failed step, on another face of what it holds,
+                # the other grips as they were (before turning every grip at once).
+                carried.add(failed)
+                order[:0] = [(g, None) for g in carry_faces(problem, start, failed - 1)]
     return result
 
 
@@ -90,8 +99,10 @@ def _passable_first(run: Run, warm, order, narrow: bool):
     faces' keyframes, 3 s on a slow machine, left the relocation that solves it short
     of time)."""
     until = time.perf_counter() + SCREEN_SHARE * (run.deadline - time.perf_counter())
-    looked, stopped = [], None
-    for i, (grips, start) in enumerate(order):
+    order = list(order)
+    looked, stopped, carried = [], None, set()
+    while len(looked) < len(order):
+        grips, start = order[len(looked)]
         if time.perf_counter() > until:
             break
         if start is None:
@@ -105,13 +116,22 @@ def _passable_first(run: Run, warm, order, narrow: bool):
         carries = sorted((ctx for ctx in walk(run.problem, start.keyframes, start.choices,
                                               run.start) if ctx.held is not None),
                          key=lambda ctx: ctx.index != stopped)
-        blocked = next((ctx for ctx in carries if not passable(run, ctx)), None)
-        if blocked is None:
-            return [looked[-1]] + looked[:-1] + order[i + 1:]
-        if stopped is None:
-            if not held_blocks(run, blocked):
+        blocked = [ctx for ctx in carries if not passable(run, ctx)]
+        if not blocked:
+            return [looked[-1]] + looked[:-1] + order[len(looked):]
+        if not held_blocks(run, blocked[0]):
+            if stopped is None:
                 break
-            stopped = blocked.index
+            continue
+        stopped = blocked[0].index if stopped is None else stopped
+        for ctx in blocked:
+            step = run.problem.step_of_keyframe(ctx.index).index
+            if step not in carried and held_blocks(run, ctx):
+                # The blocked carry on the other faces of what it holds, the other
+                # grips where these keyframes have them, looked at next (carry_faces).
+                carried.add(step)
+                order[len(looked):len(looked)] = [
+                    (g, None) for g in carry_faces(run.problem, start, step)]
     return looked + order[len(looked):]
 
 
@@ -220,13 +240,15 @@ def _path_through(run: Run, kfr) -> TrajectoryResult:
             # the coarser samples), not from scratch.
             out = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index),
                                warm=waypoints.get(ctx.index, kfr.motions.get(ctx.index)))
-            if attempt and out.status == "solved" and out.cost > DETOUR * costs[ctx.index] \
+            if attempt and (out.status != "solved" or out.cost > DETOUR * costs[ctx.index]) \
                     and time.perf_counter() < run.deadline:
                 # Sampled finer, the motion's warm start can only stay feasible by a long
                 # detour (blind3 p06: a hand entering under a shelf, 1.2 -> 4.6 -> 18.7
-                # rad^2); from scratch, at this resolution, it may not need one.
+                # rad^2), or not at all (blind8 p04: the plug carried back into its
+                # doorway, its coarse path's waypoints bunched at the jambs, ended on
+                # uneven steps); from scratch, at this resolution, it may pass.
                 cold = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index))
-                if cold.status == "solved" and cold.cost < out.cost:
+                if cold.status == "solved" and (out.status != "solved" or cold.cost < out.cost):
                     out = cold
             if out.status != "solved":
                 label = _phase_label(problem, ctx.index)

@@ -116,7 +116,10 @@ class Move(ModeKind):
             name, grip_step = walk.held
             H = walk.gripped(k, grip_step)[4]
             C.tilt_within(walk.rows.ineq, step.name, H, name, HELD_TILT)
-        walk.collide(k, step, walk.held_now(), frame, set())
+        # What the planar robot carries slides on the surfaces at its bottom's height
+        # (skeleton.motion's `sliding`): resting on them where the move ends too
+        # (blind24 p05: a parcel carried to a checkpoint, refused at `parcel vs bench`).
+        walk.collide(k, step, walk.held_now(), frame, set(walk.problem.motions[k].sliding))
 
     def _above(self, walk, step, k, tool) -> None:
         """Over its target, the hand (or what it carries) is above the face the target

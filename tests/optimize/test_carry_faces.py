@@ -1,0 +1,63 @@
+"""A carry the planar robot cannot make on the face the keyframe NLP chose is tried
+on the other faces of what it holds, the other grips kept (keyframe_stage.carry_faces);
+and a planar move ends with what it carries resting where it slides."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import pytest
+
+from tampcli.optimize.keyframe_stage import FACE_SAME, carry_faces
+from tampcli.optimize.solve import solve
+
+from .helpers import lowered_folder, ops
+
+PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
+# blind8 p04: a plug out of its doorway, two crates through it, the plug back in.
+PLUG = ("(attach plug doorway)", "(detach plug park)", "(attach c1 a1)", "(detach c1 zone-1)",
+        "(attach c2 a2)", "(detach c2 zone-2)", "(attach plug park)", "(detach plug doorway)")
+
+
+@pytest.fixture(scope="module")
+def plug():
+    with lowered_folder(PROBLEMS / "blind8" / "p04", "p04", ops(*PLUG)) as problem:
+        yield problem
+
+
+def test_only_the_carried_objects_grip_turns(plug):
+    kf = solve(plug, "keyframes")
+    assert kf.status == "solved", kf.worst_constraint
+    grips = kf.keyframes.grip
+    turned = carry_faces(plug, kf, 7)  # the carry into (detach plug doorway): step 6's grip
+    assert 1 <= len(turned) <= 4  # all four where the NLP left it off every middle
+    for g in turned:
+        assert abs(g[6] - grips[6]) > FACE_SAME
+        assert all(g[i] == grips[i] for i in g if i != 6)
+        # at a face's middle: a quarter turn from the box's yaw, as face_grips puts it
+        quarter = (g[6] - plug.bodies["plug"].pose[3]) / (0.5 * math.pi)
+        assert abs(quarter - round(quarter)) < 1e-9
+    assert carry_faces(plug, kf, 5) == []  # c2, a drum, has no face to turn to
+    assert carry_faces(plug, kf, 0) == []  # nothing carried before the first step
+
+
+def test_the_plug_goes_back_into_its_doorway_from_the_searchs_keyframes(plug):
+    """The search solves the keyframes from the reach stage's answer; from there the
+    plug was held off the middle of its east face and its carry back had no passage:
+    30 s of sampling, then the path stage's time was out."""
+    reach = solve(plug, "reach")
+    assert reach.status == "solved"
+    kf = solve(plug, "keyframes", warm=reach)
+    assert kf.status == "solved"
+    path = solve(plug, "path", warm=kf)
+    assert path.status == "solved", path.worst_constraint
+
+
+def test_a_planar_move_ends_with_what_it_carries_on_the_bench():
+    """blind24 p05: the parcel carried to two checkpoints; the move's keyframe held the
+    parcel 1 mm off the bench it slides on, which no keyframe could."""
+    plan = ("(grab parcel pad)", "(go cp-n)", "(go cp-e)", "(drop parcel dropzone)")
+    with lowered_folder(PROBLEMS / "blind24" / "p05", "p05", ops(*plan)) as problem:
+        out = solve(problem, "keyframes")
+        assert out.status == "solved", out.worst_constraint
