@@ -170,6 +170,12 @@ BLIND23 = {"p01": ("a cube pushed along a kerb, then picked onto a shelf", 3),
            "p04": ("a block placed between two others; the base moved and turned", 2),
            "p05": ("the middle block of a tower of three to the goal (KUKA)", 4),
            "p06": ("a sphere pushed into a gap narrower than the disk (planar)", 1)}
+BLIND24 = {"p01": ("the Sussman anomaly, an IPC four-operator domain", 6),
+           "p02": ("a tower of four cubes reversed (xArm6)", 8),
+           "p03": ("a 28 cm rod into a narrow rack, a 2 cm die into a cup (KUKA)", 4),
+           "p04": ("any two of four cans into a bin, one out of reach", 4),
+           "p05": ("a parcel delivered round a wall via two checkpoints (planar)", 4),
+           "p06": ("a board moved, then two cubes onto it (KUKA)", 6)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -192,7 +198,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind13", BLIND13), ("blind14", BLIND14), ("blind15", BLIND15), ("blind16", BLIND16),
             ("blind17", BLIND17), ("blind18", BLIND18), ("blind19", BLIND19),
             ("blind20", BLIND20), ("blind21", BLIND21), ("blind22", BLIND22),
-            ("blind23", BLIND23),
+            ("blind23", BLIND23), ("blind24", BLIND24),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
