@@ -61,9 +61,10 @@ FLAGS = (
          "docs/ipopt.md)", choices=tuple(BACKENDS)),
     Flag("--jobs", "bnb", "jobs", int, "N",
          "skeletons solved at once: one in this process, the others in N - 1 worker "
-         "processes; 1: serial (the default: bench/results/parallel.md measured 1.2-1.5x "
-         "on arm-sort's complete search with 2, 1.0-1.1x on small problems, for a third "
-         "more CPU; a worker's start costs about a second)",
+         "processes; 1: serial (the default: bench/results/parallel.md measured 1.55x "
+         "on arm-sort's complete search with 2 on an idle machine, 1.03x on arm-kitchen, "
+         "for more CPU; skeletons drawn while others are out do not hear of their "
+         "failures' lessons, which the serial search orders by)",
          short="-j"),
 )
 
