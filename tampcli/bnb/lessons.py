@@ -120,11 +120,34 @@ def teacher(source, task, modes, movable: frozenset[str], scene=None,
     # against 2.01, the 6-action skeleton never drawn in 1000).
     planar = scene is not None and scene.robot.model == "planar"
 
+    ops = {op.name: op for op in task.operators}
+
+    def held_at(names, action: str) -> str | None:
+        """What the robot holds during `action` of the skeleton `names`: the object of
+        the last grasp before it not set down since."""
+        held = None
+        for name in names:
+            if name == action:
+                return held
+            op, kind = ops.get(name), kinds.get(name)
+            if op is None or kind is None:
+                continue
+            if kind.fingers is True:
+                held = modes.get_mode(op.action).bind(op.args).get("object")
+            elif kind.places:
+                held = None
+        return None
+
     def learn(result) -> None:
         worst = getattr(result, "worst_constraint", None)
-        blocker = blocker_of(worst, movable)
+        # What the failing action carries is not in its way (blind24 p05: a parcel carried
+        # to a checkpoint, its row against the bench, was learned "moved before" its own
+        # carry): only the other movable bodies may be.
+        held = held_at(getattr(result, "names", ()), action_of(worst))
+        others = movable - {held}
+        blocker = blocker_of(worst, others)
         if blocker is None and rows_of is not None:
-            blocker = _pressing(result, worst, rows_of, movable)
+            blocker = _pressing(result, worst, rows_of, others)
         again = blocker is not None and not source.learn(blocker)
         # A push (within one face's cone) that runs into a wall, or out of every cone, or
         # into a body it was already known to need moved first (moving it did not help:

@@ -225,3 +225,21 @@ def test_a_keyframe_failure_naming_no_body_teaches_the_body_its_action_collides_
     learn(SimpleNamespace(stage="path", worst_constraint=failed.worst_constraint,
                           impossible=None))
     assert learned == []
+
+
+def test_what_an_action_carries_is_not_learned_to_be_in_its_way():
+    """blind24 p05: a failing `go` with the parcel in hand named the parcel against the
+    bench; the parcel is carried, not in the way. Not held, it would be a blocker."""
+    folder = BLIND22.parent / "blind24" / "p05"
+    inputs = read_inputs(InputPaths(str(folder / "domain.pddl"), str(folder / "p05.pddl")),
+                         Timers())
+    heard = []
+    source = SimpleNamespace(learn=lambda b: heard.append(b) or True,
+                             suspect=lambda n: None, forbid_operators=lambda names: None)
+    learn = teacher(source, inputs.task, inputs.modes, frozenset({"parcel"}), inputs.scene)
+    worst = "(go cp-e): collision parcel vs bench (margin 1 mm) by 0.1 cm"
+    learn(SimpleNamespace(worst_constraint=worst, names=("(grab parcel pad)", "(go cp-e)")))
+    assert heard == []
+    learn(SimpleNamespace(worst_constraint=worst, names=(
+        "(grab parcel pad)", "(drop parcel dropzone)", "(go cp-e)")))
+    assert heard == [Blocker("parcel", "(go cp-e)")]
