@@ -73,7 +73,8 @@ def path(run: Run, warm) -> TrajectoryResult:
             run.stage = "path"
         if start.solved:
             last = _relocated(run, warm, grips, start, path_through(run, start))
-            result = last if result is None or last.solved else result
+            result = last if result is None or last.solved or _deeper(last, result) \
+                else result
             failed = last.failed_actions
             if problem.planar and not last.solved and failed and failed not in carried:
                 # The carry into the failed step, on another face of what it holds,
@@ -113,11 +114,13 @@ def _passable_first(run: Run, warm, order, narrow: bool):
         looked.append((grips, start if start.solved else None))
         if not start.solved:
             continue
-        carries = sorted((ctx for ctx in walk(run.problem, start.keyframes, start.choices,
-                                              run.start) if ctx.held is not None),
+        motions = list(walk(run.problem, start.keyframes, start.choices, run.start))
+        carries = sorted((ctx for ctx in motions if ctx.held is not None),
                          key=lambda ctx: ctx.index != stopped)
         blocked = [ctx for ctx in carries if not passable(run, ctx)]
         if not blocked:
+            if any(not passable(run, ctx) for ctx in _approaches(run.problem, start, motions)):
+                continue  # a grip the disk cannot get to: the next one
             return [looked[-1]] + looked[:-1] + order[len(looked):]
         if not held_blocks(run, blocked[0]):
             if stopped is None:
@@ -133,6 +136,16 @@ def _passable_first(run: Run, warm, order, narrow: bool):
                 order[len(looked):len(looked)] = [
                     (g, None) for g in carry_faces(run.problem, start, step)]
     return looked + order[len(looked):]
+
+
+def _approaches(problem, kfr, motions) -> list:
+    """The free motions of `motions` (assemble.walk's) into a step whose grip the
+    keyframes chose: where the disk takes hold, which a face may put out of its reach
+    (blind25 p02: a crate's east face, between it and another crate, 7 s of sampling
+    before the next face)."""
+    grips = kfr.keyframes.grip
+    return [ctx for ctx in motions if ctx.held is None
+            and problem.step_of_keyframe(ctx.index).index in grips]
 
 
 def _cut(longer: TrajectoryResult, problem) -> TrajectoryResult:
@@ -155,6 +168,17 @@ def _robot_in_the_way(run: Run) -> bool:
     p04: a puck in the only doorway, 19 s for the other faces)."""
     return bool(run.in_the_way) and (
         run.blocked_alone or any(part.startswith("link:") for _, part in run.in_the_way))
+
+
+def _deeper(failed, than) -> bool:
+    """Whether the path `failed` got past more actions than the failed path `than`: the
+    skeleton's failure is then the deeper one, whose prefix is forbidden and whose
+    body in the way is learned (blind25 p02: the pick's first face, between two
+    crates, unreachable; its west face passed, and the parking after it was blocked
+    by the second crate; reported at the first face, every skeleton starting with
+    that pick was forbidden, the answer among them)."""
+    a, b = failed.failed_actions, than.failed_actions
+    return a is not None and (b is None or a > b)
 
 
 def _before_the_grips(failed, grips) -> bool:

@@ -86,9 +86,14 @@ def find(run, ctx, options: SamplingOptions) -> Obstruction | None:
 
 def resting(problem, ctx) -> frozenset[str]:
     """The movable bodies still at their start pose in motion `ctx`, besides what it
-    holds and what it may touch: those in_the_way leaves out."""
+    holds, what it may touch and what it comes to touch (the object a pick or push
+    approaches, the support a place carries to: moved first, the action could not be
+    done as it stands; blind25 p02's disk, its pick keyframe between two crates, was
+    found blocked by the crate it was to pick, and the search stopped trying that
+    crate's other faces): those in_the_way leaves out."""
     held = held_spec(ctx.held)
-    ignore = allowed_contacts(problem.motions[ctx.index])
+    m = problem.motions[ctx.index]
+    ignore = allowed_contacts(m) | m.enter_contact
     return frozenset(n for n, info in problem.bodies.items()
                      if not info.fixed and n not in ctx.moved and n not in ignore
                      and (held is None or n != held[0]))

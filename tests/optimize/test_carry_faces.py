@@ -61,3 +61,18 @@ def test_a_planar_move_ends_with_what_it_carries_on_the_bench():
     with lowered_folder(PROBLEMS / "blind24" / "p05", "p05", ops(*plan)) as problem:
         out = solve(problem, "keyframes")
         assert out.status == "solved", out.worst_constraint
+
+
+def test_a_skeletons_path_failure_is_the_deepest_any_face_reached():
+    """blind25 p02: the keyframe NLP put the disk between two crates to pick the first;
+    that face is out of reach, the crate's west face passes, and the parking after it
+    is blocked by the second crate. The failure reported is the parking's (a prefix of
+    all three actions), not the pick's: forbidding the pick's prefix took the answer
+    out with it."""
+    plan = ("(pick c1 lane-w)", "(place c1 west-bay)", "(go dock)")
+    with lowered_folder(PROBLEMS / "blind25" / "p02", "p02", ops(*plan)) as problem:
+        out = solve(problem, "path")
+        assert out.status == "infeasible"
+        assert out.failed_actions == 3, out.worst_constraint
+        assert "before (go dock)" in out.worst_constraint and "c2" in out.worst_constraint
+        assert out.keyframes.grip[0] == pytest.approx(0.0, abs=1e-6)  # the west face
