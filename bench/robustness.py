@@ -176,6 +176,12 @@ BLIND24 = {"p01": ("the Sussman anomaly, an IPC four-operator domain", 6),
            "p04": ("any two of four cans into a bin, one out of reach", 4),
            "p05": ("a parcel delivered round a wall via two checkpoints (planar)", 4),
            "p06": ("a board moved, then two cubes onto it (KUKA)", 6)}
+BLIND25 = {"p01": ("a tray with a mug on it: unload, move, reload", 6),
+           "p02": ("the disk parks past two crates blocking the corridor (planar, NAMO)", 4),
+           "p03": ("six items sorted into three colour bins (planar)", 12),
+           "p04": ("a Panda on a 35 cm pedestal reaching down and up", 6),
+           "p05": ("a die on a plate on a narrower cup, reset apart (xArm6)", 8),
+           "p06": ("a part at the bottom of a deep bin, then a can lowered in (KUKA)", 4)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -199,6 +205,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind17", BLIND17), ("blind18", BLIND18), ("blind19", BLIND19),
             ("blind20", BLIND20), ("blind21", BLIND21), ("blind22", BLIND22),
             ("blind23", BLIND23), ("blind24", BLIND24),
+            ("blind25", BLIND25),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
