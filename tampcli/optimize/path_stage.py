@@ -114,13 +114,11 @@ def _passable_first(run: Run, warm, order, narrow: bool):
         looked.append((grips, start if start.solved else None))
         if not start.solved:
             continue
-        motions = list(walk(run.problem, start.keyframes, start.choices, run.start))
-        carries = sorted((ctx for ctx in motions if ctx.held is not None),
+        carries = sorted((ctx for ctx in walk(run.problem, start.keyframes, start.choices,
+                                              run.start) if ctx.held is not None),
                          key=lambda ctx: ctx.index != stopped)
         blocked = [ctx for ctx in carries if not passable(run, ctx)]
         if not blocked:
-            if any(not passable(run, ctx) for ctx in _approaches(run.problem, start, motions)):
-                continue  # a grip the disk cannot get to: the next one
             return [looked[-1]] + looked[:-1] + order[len(looked):]
         if not held_blocks(run, blocked[0]):
             if stopped is None:
@@ -136,16 +134,6 @@ def _passable_first(run: Run, warm, order, narrow: bool):
                 order[len(looked):len(looked)] = [
                     (g, None) for g in carry_faces(run.problem, start, step)]
     return looked + order[len(looked):]
-
-
-def _approaches(problem, kfr, motions) -> list:
-    """The free motions of `motions` (assemble.walk's) into a step whose grip the
-    keyframes chose: where the disk takes hold, which a face may put out of its reach
-    (blind25 p02: a crate's east face, between it and another crate, 7 s of sampling
-    before the next face)."""
-    grips = kfr.keyframes.grip
-    return [ctx for ctx in motions if ctx.held is None
-            and problem.step_of_keyframe(ctx.index).index in grips]
 
 
 def _cut(longer: TrajectoryResult, problem) -> TrajectoryResult:
