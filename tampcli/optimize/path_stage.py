@@ -252,15 +252,13 @@ def _path_through(run: Run, kfr) -> TrajectoryResult:
             # the coarser samples), not from scratch.
             out = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index),
                                warm=waypoints.get(ctx.index, kfr.motions.get(ctx.index)))
-            if attempt and (out.status != "solved" or out.cost > DETOUR * costs[ctx.index]) \
+            if attempt and out.status == "solved" and out.cost > DETOUR * costs[ctx.index] \
                     and time.perf_counter() < run.deadline:
                 # Sampled finer, the motion's warm start can only stay feasible by a long
                 # detour (blind3 p06: a hand entering under a shelf, 1.2 -> 4.6 -> 18.7
-                # rad^2), or not at all (blind8 p04: the plug carried back into its
-                # doorway, its coarse path's waypoints bunched at the jambs, ended on
-                # uneven steps); from scratch, at this resolution, it may pass.
+                # rad^2); from scratch, at this resolution, it may not need one.
                 cold = solve_motion(run, ctx, T, checks, _phase_label(problem, ctx.index))
-                if cold.status == "solved" and (out.status != "solved" or cold.cost < out.cost):
+                if cold.status == "solved" and cold.cost < out.cost:
                     out = cold
             if out.status != "solved":
                 label = _phase_label(problem, ctx.index)
