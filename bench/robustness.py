@@ -182,6 +182,12 @@ BLIND25 = {"p01": ("a tray with a mug on it: unload, move, reload", 6),
            "p04": ("a Panda on a 35 cm pedestal reaching down and up", 6),
            "p05": ("a die on a plate on a narrower cup, reset apart (xArm6)", 8),
            "p06": ("a part at the bottom of a deep bin, then a can lowered in (KUKA)", 4)}
+BLIND26 = {"p01": ("a button press (a move over a pad) unlocks the pick (KUKA)", 3),
+           "p02": ("a crate pushed into a corner between two walls, two pushes", 2),
+           "p03": ("the tops of two stacks swapped: cylinder onto box, box onto cylinder", 6),
+           "p04": ("a goal region with a fixed pillar standing in it (planar)", 2),
+           "p05": ("a Panda mounted upside down", 4),
+           "p06": ("a part carried over a scanner while held, then placed (xArm6)", 3)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -205,7 +211,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind17", BLIND17), ("blind18", BLIND18), ("blind19", BLIND19),
             ("blind20", BLIND20), ("blind21", BLIND21), ("blind22", BLIND22),
             ("blind23", BLIND23), ("blind24", BLIND24),
-            ("blind25", BLIND25),
+            ("blind25", BLIND25), ("blind26", BLIND26),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

@@ -1,0 +1,7 @@
+(define (problem b26-p01)
+  (:domain b26-button)
+  (:objects cube1 locker goal button)
+  (:init (cube cube1) (zone locker) (zone goal) (button button)
+         (opens button locker) (locked locker)
+         (at cube1 locker) (handempty))
+  (:goal (at cube1 goal)))

@@ -1,0 +1,5 @@
+(define (problem b26-p06)
+  (:domain b26-scanner)
+  (:objects part1 - part tray-in tray-out scan-pad - zone)
+  (:init (at part1 tray-in) (handempty) (outbound tray-out) (scanner scan-pad))
+  (:goal (and (at part1 tray-out) (handempty))))
