@@ -188,6 +188,12 @@ BLIND26 = {"p01": ("a button press (a move over a pad) unlocks the pick (KUKA)",
            "p04": ("a goal region with a fixed pillar standing in it (planar)", 2),
            "p05": ("a Panda mounted upside down", 4),
            "p06": ("a part carried over a scanner while held, then placed (xArm6)", 3)}
+BLIND27 = {"p01": ("a 3-cycle of three shapes through a buffer only one fits", 8),
+           "p02": ("two cubes into a tight rimmed tray with a blocker in it (KUKA)", 6),
+           "p03": ("a tower's top two blocks swapped via two cramped buffers (xArm6)", 8),
+           "p04": ("a push-only crate plugs a doorway; two boxes carried through (planar)", 6),
+           "p05": ("three pieces fill a three-walled pocket in the order the shapes decide (planar)", 6),
+           "p06": ("three tall parts shifted one slot along a rack (Panda)", 6)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -212,6 +218,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind20", BLIND20), ("blind21", BLIND21), ("blind22", BLIND22),
             ("blind23", BLIND23), ("blind24", BLIND24),
             ("blind25", BLIND25), ("blind26", BLIND26),
+            ("blind27", BLIND27),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

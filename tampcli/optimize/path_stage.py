@@ -114,8 +114,13 @@ def _passable_first(run: Run, warm, order, narrow: bool):
         looked.append((grips, start if start.solved else None))
         if not start.solved:
             continue
+        # The carries a grip decides: a push's motion goes where its face says, whatever
+        # the grips (blind27 p04: a crate's push looked at first ended the look before
+        # the box carried through the door was).
         carries = sorted((ctx for ctx in walk(run.problem, start.keyframes, start.choices,
-                                              run.start) if ctx.held is not None),
+                                              run.start)
+                          if ctx.held is not None
+                          and not run.problem.motions[ctx.index].pushes),
                          key=lambda ctx: ctx.index != stopped)
         blocked = [ctx for ctx in carries if not passable(run, ctx)]
         if not blocked:

@@ -31,9 +31,11 @@ def test_only_the_carried_objects_grip_turns(plug):
     assert kf.status == "solved", kf.worst_constraint
     grips = kf.keyframes.grip
     turned = carry_faces(plug, kf, 7)  # the carry into (detach plug doorway): step 6's grip
-    assert 1 <= len(turned) <= 4  # all four where the NLP left it off every middle
+    # The three other faces: the one the grip is on is never tried again, even where
+    # the NLP left it off that face's middle (blind27 p04: 5 deg off, 13 s again).
+    assert len(turned) == 3
     for g in turned:
-        assert abs(g[6] - grips[6]) > FACE_SAME
+        assert abs(g[6] - grips[6]) > math.pi / 4 - FACE_SAME
         assert all(g[i] == grips[i] for i in g if i != 6)
         # at a face's middle: a quarter turn from the box's yaw, as face_grips puts it
         quarter = (g[6] - plug.bodies["plug"].pose[3]) / (0.5 * math.pi)
