@@ -2,10 +2,9 @@
 
 Before any skeleton, `first_move_proofs`: the actions that cannot move their
 object from its start pose whatever came before (a push, by the planar robot or
-an arm, whose object's
-every face's friction cone misses the target; an arm's grasp of an object
-standing beyond its reach), each a proved precondition "the object was moved
-before" (`LearningSource.require_moved`).
+an arm, whose object's every face's friction cone misses the target; an arm's
+grasp of an object standing beyond its reach), each a proved precondition "the
+object was moved before" (`LearningSource.require_moved`).
 
 Then three lessons of a failed stage, each read off the stage's result:
 

@@ -58,7 +58,7 @@ def path(run: Run, warm) -> TrajectoryResult:
     order = [(grips, kfr if grips is None else None) for grips in order]
     if answer is None and problem.planar and faces:
         order = _passable_first(run, warm, order, kfr.narrowed)
-    carried = set()  # the failed steps whose carry's faces were tried alone
+    carried: set[int] = set()  # the steps whose carry's faces were queued alone
     while order:
         grips, start = order.pop(0)
         if result is not None and (result.solved or result.status == "bounded"
@@ -75,13 +75,18 @@ def path(run: Run, warm) -> TrajectoryResult:
             last = _relocated(run, warm, grips, start, path_through(run, start))
             result = last if result is None or last.solved or _deeper(last, result) \
                 else result
-            failed = last.failed_actions
-            if problem.planar and not last.solved and failed and failed not in carried:
-                # The carry into the failed step, on another face of what it holds,
-                # the other grips as they were (before turning every grip at once).
-                carried.add(failed)
-                order[:0] = [(g, None) for g in carry_faces(problem, start, failed - 1)]
+            if problem.planar and not last.solved and last.failed_actions:
+                _carry_faces_next(order, 0, carried, problem, start, last.failed_actions - 1)
     return result
+
+
+def _carry_faces_next(order: list, at: int, carried: set, problem, start, step: int) -> None:
+    """Into `order` at `at`, once per step: the carry into `step` on the other faces
+    of what it holds, the other grips where the keyframes `start` have them
+    (keyframe_stage.carry_faces), before the orders that turn every grip at once."""
+    if step not in carried:
+        carried.add(step)
+        order[at:at] = [(g, None) for g in carry_faces(problem, start, step)]
 
 
 SCREEN_SHARE = 0.2  # of the path stage's time left, at most, for _passable_first's look
@@ -125,19 +130,15 @@ def _passable_first(run: Run, warm, order, narrow: bool):
         blocked = [ctx for ctx in carries if not passable(run, ctx)]
         if not blocked:
             return [looked[-1]] + looked[:-1] + order[len(looked):]
-        if not held_blocks(run, blocked[0]):
+        by_held = [ctx for ctx in blocked if held_blocks(run, ctx)]
+        if not by_held or by_held[0] is not blocked[0]:
             if stopped is None:
                 break
             continue
         stopped = blocked[0].index if stopped is None else stopped
-        for ctx in blocked:
-            step = run.problem.step_of_keyframe(ctx.index).index
-            if step not in carried and held_blocks(run, ctx):
-                # The blocked carry on the other faces of what it holds, the other
-                # grips where these keyframes have them, looked at next (carry_faces).
-                carried.add(step)
-                order[len(looked):len(looked)] = [
-                    (g, None) for g in carry_faces(run.problem, start, step)]
+        for ctx in by_held:  # each looked at next on its other faces
+            _carry_faces_next(order, len(looked), carried, run.problem, start,
+                              run.problem.step_of_keyframe(ctx.index).index)
     return looked + order[len(looked):]
 
 
