@@ -5,13 +5,15 @@ placement still moves when a later one needs its room; what the starting
 point decides is which local optimum SLSQP finds. Measured on the robust
 packing problems (several objects into one region, under 15 % slack): from
 every object at the region's middle the NLP ended with two of them
-overlapping for every order. Three starts, tried in turn until one solves:
+overlapping for every order. Four starts, tried in turn until one solves:
 the region's middle (with room to spare the NLP pushes the objects apart
 from there; the keyframe stage, whose grasp sides follow the robot's
 approach, was tuned on such placements); a row along the region's long
 side, the first placed at the end farthest from the robot (a later one need
 not pass it), equal gaps (first when a region is tight: see `starts`); each
-placement where it is clearest of what rests there by then. Each start is a function of the skeleton
+placement where it is clearest of what rests there by then; shelves, rows
+across the way from the robot filled from the far end (first where a row
+does not fit the region). Each start is a function of the skeleton
 alone: never of a neighbouring skeleton's result, so a skeleton's outcome
 does not depend on what was evaluated before it or on what follows it.
 """
@@ -105,6 +107,12 @@ def _walk(problem, pick) -> tuple[dict, dict]:
 def packed(problem) -> tuple[dict, dict]:
     """Placements into one region in a row along its long side, the first farthest
     from the robot, equal gaps between them and at the ends."""
+    slots = _row_slots(problem)
+    return _walk(problem, lambda step, where, yaw, region: slots[step.index])
+
+
+def _row_slots(problem) -> dict[int, np.ndarray]:
+    """step -> (x, y) of `packed`."""
     regions = _regions(problem)
     robot = _robot_xy(problem)
     slots: dict[int, np.ndarray] = {}
@@ -126,7 +134,71 @@ def packed(problem) -> tuple[dict, dict]:
             xy = np.asarray(region.center, dtype=float).copy()
             xy[axis] = centre
             slots[s.index] = xy
+    return slots
+
+
+def shelved(problem) -> tuple[dict, dict]:
+    """Placements into one region in shelves: rows across the direction from the robot,
+    filled in the skeleton's order from the region's far end, a row closed once an
+    object does not fit beside what is in it (what is put down later never passes what
+    was put down before); equal gaps between the objects of a row, and between the rows
+    and the region's ends. A region the shelves do not fit gets the packed row; one
+    that receives a single object, its middle."""
+    rows = _row_slots(problem)
+    slots = {}
+    for name, region in _regions(problem).items():
+        steps = [s for s in _placing(problem) if s.target == name]
+        if len(steps) < 2:
+            slots.update({s.index: np.asarray(region.center, dtype=float) for s in steps})
+            continue
+        found = _shelves(problem, region, steps)
+        slots.update(found if found is not None else {s.index: rows[s.index] for s in steps})
     return _walk(problem, lambda step, where, yaw, region: slots[step.index])
+
+
+def _shelves(problem, region, steps) -> dict | None:
+    """step -> (x, y) in shelves (`shelved`), or None where they do not fit.
+
+    The depth axis is the world axis along which the region lies farther from the
+    robot; each object's footprint at its start yaw (the yaw `_walk` gives it)."""
+    robot = _robot_xy(problem)
+    centre = np.asarray(region.center, dtype=float)
+    depth = int(np.argmax(np.abs(centre - robot)))
+    side = 1 - depth
+    far = 1.0 if centre[depth] >= robot[depth] else -1.0
+    sizes = []
+    for s in steps:
+        info = problem.bodies[s.obj]
+        yaw = info.pose[3]
+        if not problem.planar:
+            yaw = _fitting_yaw(info, yaw, region)
+        sizes.append((_extent(info, yaw, depth), _extent(info, yaw, side)))
+    shelves: list[list[int]] = [[]]
+    for i, (_, w) in enumerate(sizes):
+        used = sum(sizes[j][1] for j in shelves[-1])
+        if shelves[-1] and used + w > region.size[side]:
+            shelves.append([])
+        shelves[-1].append(i)
+    deep = [max(sizes[j][0] for j in shelf) for shelf in shelves]
+    if sum(deep) > region.size[depth] or any(
+            sum(sizes[j][1] for j in shelf) > region.size[side] for shelf in shelves):
+        return None
+    gap = (region.size[depth] - sum(deep)) / (len(shelves) + 1)
+    at = centre[depth] + far * 0.5 * region.size[depth]  # the far end
+    out = {}
+    for shelf, d in zip(shelves, deep, strict=True):
+        middle = at - far * (gap + 0.5 * d)
+        at = middle - far * 0.5 * d
+        widths = [sizes[j][1] for j in shelf]
+        lateral = (region.size[side] - sum(widths)) / (len(shelf) + 1)
+        edge = centre[side] - 0.5 * region.size[side]
+        for j, w in zip(shelf, widths, strict=True):
+            xy = centre.copy()
+            xy[depth] = middle
+            xy[side] = edge + lateral + 0.5 * w
+            edge = xy[side] + 0.5 * w
+            out[steps[j].index] = xy
+    return out
 
 
 def clearest(problem) -> tuple[dict, dict]:
@@ -160,9 +232,10 @@ def centred(problem) -> tuple[dict, dict]:
 TIGHT = 0.3  # a region whose row of placements leaves less of its length free is packed
 
 
-def _tight(problem) -> bool:
-    """Does some region receive several placements with under TIGHT of its long side
-    to spare (at the objects' start yaws)?"""
+def _row_use(problem) -> float:
+    """The largest share of its long side a region's row of placements takes (at the
+    objects' start yaws); 0 where no region receives several."""
+    use = 0.0
     for name, region in _regions(problem).items():
         steps = [s for s in _placing(problem) if s.target == name]
         if len(steps) < 2:
@@ -170,13 +243,18 @@ def _tight(problem) -> bool:
         axis = int(np.argmax(region.size))
         used = sum(_extent(problem.bodies[s.obj], problem.bodies[s.obj].pose[3], axis)
                    for s in steps)
-        if used > (1.0 - TIGHT) * region.size[axis]:
-            return True
-    return False
+        use = max(use, used / region.size[axis])
+    return use
 
 
 def starts(problem) -> tuple:
-    """The starts to try in order: the packed row first when a region is tight."""
-    if _tight(problem):
-        return (packed, centred, clearest)
-    return (centred, packed, clearest)
+    """The starts to try in order: the shelves first where a region's row would not fit
+    along its long side (blind27 p05: a slab and two boxes, 20 cm of row in a 14.6 cm
+    square pocket, packed as a column and a column of two); the packed row first when
+    a region is tight (less than TIGHT of its long side to spare); else the middle."""
+    use = _row_use(problem)
+    if use > 1.0:
+        return (shelved, packed, centred, clearest)
+    if use > 1.0 - TIGHT:
+        return (packed, centred, clearest, shelved)
+    return (centred, packed, clearest, shelved)

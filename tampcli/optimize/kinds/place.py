@@ -116,12 +116,15 @@ class Place(ModeKind):
             q_place = walk.planar_q(at, grip, phi)
             q_pick = walk.planar_q(start[:3, 3], grip, phi)
             # The robot alone: where the held object ends does not depend on phi.
-            place = problem.checker.min_distance(
+            # How deep within the margin, to the millimetre: near a wall every face
+            # may be within it, and the one 4 mm in beats one 4 cm into a neighbour
+            # (blind27 p05: a box into a walled pocket beside a slab).
+            place = round(max(0.0, horizon - problem.checker.min_distance(
                 q_place, others, None, frozenset({step.support}), static=False,
-                horizon=horizon) < horizon
-            pick = problem.checker.min_distance(
+                horizon=horizon)), 3)
+            pick = round(max(0.0, horizon - problem.checker.min_distance(
                 q_pick, others, None, frozenset({step.obj}), static=False,
-                horizon=horizon) < horizon
+                horizon=horizon)), 3)
             # Clear at the grasp first: the grasp's object stands where it stands, while
             # the keyframe NLP can still slide the placement within its region (pen-k4:
             # the top face, clear at the yard, put the disk into the rail at the pen).
