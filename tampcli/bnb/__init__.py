@@ -373,8 +373,9 @@ class _Search(StageSteps):
         status = "limit"
         if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):
             status = "unsolvable"
+        proofs = getattr(self.skeletons, "proofs", 0)
         ending = Ending(stop, self.rank, status == "unsolvable", tuple(self.learned_prefixes),
-                        getattr(self.skeletons, "scope", None))
+                        getattr(self.skeletons, "scope", None), proofs)
         reason = explain(ending, self.failures, self.deepest_feasible, self.options,
                          self.diagnose)
         return BnBResult(status, reason, None, (), None, None, proved_lb, False, self.records,

@@ -59,6 +59,7 @@ class Ending:
     # skeleton starting with one.
     learned_prefixes: tuple[tuple[str, ...], ...] = ()
     scope: str | None = None  # which skeletons the source yields, in words
+    proofs: int = 0  # geometric proofs compiled into the task before any skeleton
 
 
 SHOWN = 3  # failures (and learned prefixes) named in the reason
@@ -69,6 +70,12 @@ def explain(ending: Ending, failures: list[Failure], deepest_feasible, options,
     """Why there is no solution: how the search ended (a limit, or no skeleton left,
     and whether learned prefixes, a heuristic, excluded the rest), the deepest
     feasible keyframes, the first failures with what `diagnose` finds violated."""
+    if ending.tried == 0 and ending.proofs:
+        # Not the symbols' doing (blind28 p06: `plan` found the plan in 1 ms; a false
+        # reach proof had ruled out its first pick).
+        return (f"no skeleton: every plan breaks one of the {ending.proofs} geometric "
+                "proof(s) made before any skeleton (the 'proved before any skeleton' "
+                "line names them)")
     if ending.tried == 0:
         return "no skeleton: the task is symbolically unsolvable"
     parts = [_how(ending, options)]

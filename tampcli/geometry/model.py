@@ -7,6 +7,7 @@ compare and hash; `.matrix` / `.base_pose` give 4x4 arrays.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import numpy as np
 
@@ -66,7 +67,10 @@ class RobotSpec:
             return ARMS[self.model]
         if self.model != "urdf":
             return None
-        return Arm(urdf=self.urdf, tool_link=self.tool_link, joints=self.joints,
+        # Absolute: a relative path (the scene's folder as the command line gave it)
+        # would be read as inside pybullet_data, where the built-in arms' are.
+        return Arm(urdf=str(Path(self.urdf).resolve()), tool_link=self.tool_link,
+                   joints=self.joints,
                    fingers=self.fingers, tool_offset=self.tool_offset,
                    tool_frame=self.tool_frame, package_paths=self.package_paths)
 

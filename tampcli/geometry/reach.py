@@ -10,7 +10,7 @@ segment the next one continues along the closing joint's axis is one length
 (the Panda's wrist, flange and hand: 0.228 m, not 0.298). Measured against the
 farthest tool of 20000 random configurations within the joint limits: Panda
 0.9489 m (0.9485 sampled), KUKA iiwa 1.0360 (1.0359), xArm6 0.9010 (0.9009). A
-prismatic joint on the way leaves no bound (None).
+prismatic joint on the way, the first one included, leaves no bound (None).
 """
 
 from __future__ import annotations
@@ -38,6 +38,11 @@ def reach_ball(world) -> tuple[np.ndarray, float] | None:
     if not joints:
         return None
     centre_link = joints[0]
+    if chain.links[centre_link].joint_type != REVOLUTE:
+        # A prismatic first joint (a track) carries every later origin along with it:
+        # no ball about the start's (blind28 p06: a 1.12 m ball about the carriage's
+        # start position 'proved' a part 0.35 m from the shoulder out of reach).
+        return None
     if len(joints) > 1:
         first, second = frames[joints[0]], frames[joints[1]]
         axis = first[:3, :3] @ chain.links[joints[0]].axis

@@ -196,13 +196,14 @@ def reach(run: Run, warm) -> TrajectoryResult:
 
 def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
                     placements: dict | None = None, collisions: bool = True,
-                    retries: bool = True, narrow: bool | None = None) -> TrajectoryResult:
+                    retries: bool = True, narrow: bool | None = None,
+                    tight: bool | None = None) -> TrajectoryResult:
     """`grips`: step -> a grip parameter the NLP keeps (the NLP's choice otherwise);
     `placements`: the final stage's values to use (solved from scratch otherwise);
     `collisions`: False for the relaxation (`reach`); `retries`: False for one NLP
-    from the guess (no jittered guess, no `tight_margin`); `narrow`: the hand narrowed
-    to the grips chosen (hand.with_hand), open when False, as the warm start's prefix
-    had it when None."""
+    from the guess (no jittered guess and, unless `tight`, no `tight_margin`);
+    `narrow`: the hand narrowed to the grips chosen (hand.with_hand), open when False,
+    as the warm start's prefix had it when None."""
     problem = run.problem
     if narrow is None:
         narrow = _shares_prefix(problem, warm) and warm.narrowed
@@ -261,7 +262,9 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
         if out.status == "solved" or time.perf_counter() > run.deadline:
             break
     out, choices, at, checker = best
-    if out.status != "solved" and collisions and retries and time.perf_counter() < run.deadline:
+    if tight is None:
+        tight = retries
+    if out.status != "solved" and collisions and tight and time.perf_counter() < run.deadline:
         out = _tight_keyframes(run, layout, bounds, out, choices, at, checker)
     kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
     T = problem.options.waypoints

@@ -101,19 +101,27 @@ def _passable_first(run: Run, warm, order, narrow: bool):
     5 mm a side, which only the sampler finds). The look goes on past the first grip
     only where what is held blocks its carry (motion.held_blocks: blind19 p04's
     door blocked by a puck looks no further), the carry that stopped it looked at
-    first, and ends at SCREEN_SHARE of the time left (robust-planar pen-k4: its other
+    first, from the grips that left the fewest carries blocked so far, and ends at
+    SCREEN_SHARE of the time left (robust-planar pen-k4: its other
     faces' keyframes, 3 s on a slow machine, left the relocation that solves it short
     of time)."""
     until = time.perf_counter() + SCREEN_SHARE * (run.deadline - time.perf_counter())
     order = list(order)
-    looked, stopped, carried = [], None, set()
+    looked, stopped, carried, fewest, seen = [], None, set(), math.inf, set()
     while len(looked) < len(order):
         grips, start = order[len(looked)]
         if time.perf_counter() > until:
             break
+        if grips is not None:
+            key = _grip_key(grips)
+            if key in seen:  # queued again from another start: looked at already
+                del order[len(looked)]
+                continue
+            seen.add(key)
         if start is None:
             run.stage = "keyframes"
-            start = _face_keyframes(run, warm, grips, first=True, narrow=narrow)
+            start = _face_keyframes(run, warm, grips, first=True, narrow=narrow,
+                                    fresh=bool(looked))
             run.stage = "path"
         # A grip's keyframes unsolved here are solved again in turn, with retries.
         looked.append((grips, start if start.solved else None))
@@ -136,10 +144,20 @@ def _passable_first(run: Run, warm, order, narrow: bool):
                 break
             continue
         stopped = blocked[0].index if stopped is None else stopped
+        if len(blocked) <= fewest:
+            # A grip that frees one carry is where the others' faces are turned from
+            # (blind27 p04: each box through the door needs its own face; turned one
+            # at a time from the keyframes' grips, the pair was never looked at).
+            fewest, carried = len(blocked), set()
         for ctx in by_held:  # each looked at next on its other faces
             _carry_faces_next(order, len(looked), carried, run.problem, start,
                               run.problem.step_of_keyframe(ctx.index).index)
     return looked + order[len(looked):]
+
+
+def _grip_key(grips: dict) -> frozenset:
+    """The faces `grips` holds at, a full turn apart or not (0 and 360 degrees)."""
+    return frozenset((i, round(math.remainder(t, 2 * math.pi), 3)) for i, t in grips.items())
 
 
 def _cut(longer: TrajectoryResult, problem) -> TrajectoryResult:
@@ -184,19 +202,26 @@ def _before_the_grips(failed, grips) -> bool:
     return failed.failed_actions - 1 < min(grips)
 
 
-def _face_keyframes(run: Run, warm, grips, first: bool, narrow: bool):
+def _face_keyframes(run: Run, warm, grips, first: bool, narrow: bool, fresh: bool = False):
     """The keyframes with the planar suction grips kept at `grips`. A face tried first
     is a guess worth one NLP, where it fails the NLP's own angle comes next
     (planar-tamp p01: 0.8 s of retries for nothing); and only where it is reachable
     at all: the keyframe NLP without collisions (a tenth of the cost) first, whose
     answer it then starts from (planar-tamp p01: a face the disk cannot reach took
-    26 iterations, 0.37 s, to fail; its relaxation fails in 0.03 s)."""
+    26 iterations, 0.37 s, to fail; its relaxation fails in 0.03 s). `fresh`: where
+    the relaxation fails from the warm start, from a fresh guess too (the screening's
+    turned faces)."""
     if not first:
         return keyframes_with(run, warm, grips, narrow=narrow)
     probe = keyframes_with(run, warm, grips, collisions=False, retries=False)
+    if not probe.solved and warm is not None and fresh:
+        # From the warm start's configurations, held at the old faces, SLSQP can stall
+        # with the grips fixed (blind27 p04: 'tool off the contact pose by 6.4 cm' at a
+        # face the fresh guess reaches at once).
+        probe = keyframes_with(run, None, grips, collisions=False, retries=False)
     if not probe.solved:
         return probe
-    return keyframes_with(run, probe, grips, retries=False, narrow=narrow)
+    return keyframes_with(run, probe, grips, retries=False, narrow=narrow, tight=True)
 
 
 RELOCATIONS = 2  # rounds of objects moved out of a failed motion's way, per grip choice

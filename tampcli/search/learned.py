@@ -229,6 +229,12 @@ class LearningSource:
         return words
 
     @property
+    def proofs(self) -> int:
+        """Geometric proofs compiled into the task: preconditions proved for every
+        skeleton (`require_moved`) and actions proved impossible in any."""
+        return len(self.proved) + len(self.impossible)
+
+    @property
     def status(self) -> str:
         return getattr(self._plain, "status", "running")
 

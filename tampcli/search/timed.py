@@ -17,6 +17,10 @@ class TimedSource:
     def scope(self) -> str:
         return self.topk.scope
 
+    @property
+    def proofs(self) -> int:
+        return getattr(self.topk, "proofs", 0)
+
     def forbid_prefix(self, names):
         self.topk.forbid_prefix(names)
 

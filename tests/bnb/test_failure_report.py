@@ -162,3 +162,29 @@ def test_a_mesh_too_wide_as_its_bounding_box_proves_nothing(tmp_path):
     assert solution.status == "limit", solution.reason
     assert "(as its bounding box)" in solution.reason
     assert "proved impossible" not in solution.reason
+
+
+def test_no_skeleton_left_by_the_proofs_is_not_called_symbolically_unsolvable(tmp_path):
+    """blind28 p06: `plan` had the plan, `solve` said 'the task is symbolically
+    unsolvable' after a reach proof, made before any skeleton, ruled out its pick.
+    Here a true one: the cube 1.2 m from the Panda's base (its reach ball: 0.949 m
+    about the shoulder), the only action that moves it a pick."""
+    for name in ("domain.pddl", "modes.toml"):
+        (tmp_path / name).write_text((ROOT / "domains" / "arm-pick-place" / name).read_text())
+    folder = ROOT / "problems" / "arm-pick-place"
+    (tmp_path / "p01.pddl").write_text((folder / "p01.pddl").read_text())
+    scene = (folder / "p01.scene.toml").read_text()
+    far = {"size = [1.2, 1.4, 0.04]": "size = [1.8, 1.4, 0.04]",
+           "pose = [0.3, 0.0, -0.02]": "pose = [0.6, 0.0, -0.02]",
+           "pose = [0.45, -0.2, 0.025]": "pose = [1.2, -0.2, 0.025]",
+           "center = [0.45, -0.2]": "center = [1.2, -0.2]"}
+    for old, new in far.items():
+        assert scene.count(old) == 1
+        scene = scene.replace(old, new)
+    (tmp_path / "p01.scene.toml").write_text(scene)
+    solution = solve_paths(InputPaths(str(tmp_path / "domain.pddl"), str(tmp_path / "p01.pddl")),
+                           SolveOptions(BnBOptions(time_limit=60)))
+    assert solution.status == "unsolvable", solution.reason
+    assert "symbolically" not in solution.reason
+    assert "geometric proof(s) made before any skeleton" in solution.reason
+    assert len(solution.skeletons) == 0

@@ -102,7 +102,11 @@ def load_urdf(pb, client: int, path, pos, orn, scale: float, error,
             Path(target).write_text(text, encoding="utf-8")
         with _quiet_c_output() as printed:
             try:
+                # Cylinders as cylinders: by default PyBullet turns a URDF's <cylinder>
+                # into a mesh it names "unknown_file", which no query here can read
+                # (blind28 p05: an arm's cylinder links were in no collision pair).
                 return pb.loadURDF(target, pos, orn, useFixedBase=True, globalScaling=scale,
+                                   flags=pb.URDF_USE_IMPLICIT_CYLINDER,
                                    physicsClientId=client)
             except pb.error as e:
                 reason = str(e).rstrip(".")

@@ -1,0 +1,64 @@
+"""A researcher's own URDF arm, as problems/blind28 brought two (written from the docs
+alone): its file found beside the scene whatever the working folder, its cylinder
+links in the collision model, and no reach ball where a track carries the arm."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from tampcli.geometry.reach import reach_ball
+from tampcli.geometry.scene_parse import build_scene
+from tampcli.geometry.tomlsrc import read_toml
+from tampcli.geometry.world import World
+
+ROOT = Path(__file__).resolve().parents[2]
+OWN_ARM = ROOT / "problems" / "blind28" / "p05"  # six revolute joints, boxes and cylinders
+TRACK = ROOT / "problems" / "blind28" / "p06"  # the same kind of arm on a 1.5 m track
+
+
+@pytest.mark.parametrize("where", ["root", "folder"])
+def test_a_relative_urdf_is_read_beside_the_scene(monkeypatch, where):
+    """Before: the scene's folder as the command line gave it, joined to the URDF's
+    name, was looked for inside pybullet_data (`cannot read .../pybullet_data/problems/
+    blind28/p05/b28arm.urdf`); tests had only used absolute paths."""
+    if where == "root":
+        monkeypatch.chdir(ROOT)
+        scene = "problems/blind28/p05/p05.scene.toml"
+    else:
+        monkeypatch.chdir(OWN_ARM)
+        scene = "p05.scene.toml"
+    with World(build_scene(read_toml(scene))) as world:
+        assert "hand" in world.chain.index  # the file's own links
+        assert world.joint_names == tuple(f"joint{i}" for i in range(1, 7))
+
+
+def test_cylinder_links_are_in_the_collision_model():
+    """PyBullet turns a URDF <cylinder> into a mesh named 'unknown_file' unless asked
+    not to, and that mesh was skipped: the base, link1 and link4 had no shape at all."""
+    with World(build_scene(read_toml(str(OWN_ARM / "p05.scene.toml")))) as world:
+        shapes = {name: world.robot_link_shapes(world.chain.index[name])
+                  for name in ("base_link", "link1", "link4", "link2")}
+        assert [s.kind for s in shapes["link2"]] == ["box"]
+        for name, (radius, height, z) in {"base_link": (0.07, 0.10, 0.05),
+                                          "link1": (0.055, 0.12, 0.06),
+                                          "link4": (0.035, 0.04, 0.02)}.items():
+            (shape,) = shapes[name]
+            assert shape.kind == "cylinder"
+            assert shape.size == pytest.approx((radius, height))
+            assert shape.local[:3, 3] == pytest.approx((0.0, 0.0, z))
+
+
+def test_an_arm_on_a_track_has_no_reach_ball():
+    """The ball was centred on the arm's shoulder where the carriage starts (1.12 m),
+    so a part 0.35 m from the shoulder with the carriage at the track's far end was
+    'proved' out of reach and the task reported unsolvable."""
+    with World(build_scene(read_toml(str(TRACK / "p06.scene.toml")))) as world:
+        assert reach_ball(world) is None
+        start = world.tool_pose(world.start)[:3, 3]
+        moved = np.array(world.start, dtype=float)
+        moved[0] = world.upper[0]  # the carriage at the far end of its track
+        far = world.tool_pose(moved)[:3, 3]
+        assert np.linalg.norm(far - start) > 1.0
