@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from tampcli.optimize.keyframe_stage import FACE_SAME, carry_faces
@@ -113,3 +114,26 @@ def test_the_screening_turns_each_boxs_face_from_the_grips_that_freed_the_other(
         assert out.status == "solved", out.worst_constraint
         for step in (2, 4):  # each box held on the face that leads it through the door
             assert abs(math.cos(out.keyframes.grip[step])) == pytest.approx(1.0, abs=0.05)
+
+
+def test_a_move_over_a_body_aims_where_the_skeleton_has_put_it():
+    """blind28 p03 (a pour, after PDDLStream's): the bowl goes to the mat, then the cup
+    is held over the bowl. The move's target was the bowl's rectangle in the scene, so
+    the cup was held over the bowl's start spot, 26 cm from the bowl."""
+    plan = ("(pick bowl bowl-home)", "(place bowl mat)", "(pick cup coaster)",
+            "(hold-over cup bowl)", "(pour cup bowl)", "(place cup coaster)")
+    with lowered_folder(PROBLEMS / "blind28" / "p03", "p03", ops(*plan)) as problem:
+        kf = solve(problem, "keyframes")
+        assert kf.status == "solved", kf.worst_constraint
+        world = problem.world
+        pose = {i: world.tool_pose(kf.keyframes.q[problem.steps[i].keyframes[0]])
+                for i in (0, 1, 3)}
+        # where the bowl went: held as it was taken, set down at the place's keyframe
+        start = np.asarray(problem.bodies["bowl"].pose[:3])
+        grasp = np.linalg.inv(pose[0]) @ np.append(start, 1.0)
+        bowl = (pose[1] @ grasp)[:2]
+        tool = pose[3][:2, 3]
+        half = problem.bodies["bowl"].half[0] / math.sqrt(2)  # a drum's inner square
+        assert np.all(np.abs(tool - bowl) <= half + 1e-6), (tool, bowl)
+        start = start[:2]
+        assert math.dist(tool, start) > 0.1  # not over where the bowl stood
