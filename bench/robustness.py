@@ -194,6 +194,13 @@ BLIND27 = {"p01": ("a 3-cycle of three shapes through a buffer only one fits", 8
            "p04": ("a push-only crate plugs a doorway; two boxes carried through (planar)", 6),
            "p05": ("three pieces fill a three-walled pocket in the order the shapes decide (planar)", 6),
            "p06": ("three tall parts shifted one slot along a rack (Panda)", 6)}
+# problems/blind28, written blind against 135265e (literature classes; two URDF arms).
+BLIND28 = {"p01": ("rovers: calibrate, image, sample, communicate (planar)", 9),
+           "p02": ("a batch oven: one bake cooks every dish in it (Panda, turned base)", 9),
+           "p03": ("a pour: the bowl moved, the cup held over it (xArm6, turned base)", 6),
+           "p04": ("singulation: a push-only crate wedged between two parts (KUKA)", 5),
+           "p05": ("sensing: clear a camera's sightline, park, look (own URDF arm)", 8),
+           "p06": ("a track-mounted URDF arm exchanging parts between stations", 6)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -218,7 +225,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind20", BLIND20), ("blind21", BLIND21), ("blind22", BLIND22),
             ("blind23", BLIND23), ("blind24", BLIND24),
             ("blind25", BLIND25), ("blind26", BLIND26),
-            ("blind27", BLIND27),
+            ("blind27", BLIND27), ("blind28", BLIND28),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

@@ -236,6 +236,10 @@ def _scene_tables(scene: dict) -> list[Table]:
         table.add_row("robot", f"{robot.get('model')} ({len(robot.get('joints', []))} joints, "
                                f"tool {robot.get('tool_link')})")
         table.add_row("base", _pose(robot.get("base", ())))
+        if "gripper_opening" in robot:
+            table.add_row("gripper", f"opening {100 * robot['gripper_opening']:.1f} cm, "
+                                     f"fingertips {100 * robot['fingertip_depth']:.1f} cm "
+                                     "beyond the tool origin")
     if scene.get("modes"):
         table.add_row("modes", str(scene["modes"]))
     if "support" in scene:

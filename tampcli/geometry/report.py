@@ -50,6 +50,10 @@ def scene_summary(domain: ast.Domain, problem: ast.Problem, problem_path, scene_
             "upper": _round(world.upper),
             "start": _round(world.start),
         }
+        if scene.robot.model != "planar" and world.gripper_opening is not None:
+            # The two figures robots.md checks a new arm's tool frame by (m).
+            robot["gripper_opening"] = round(float(world.gripper_opening), 4)
+            robot["fingertip_depth"] = round(float(world.fingertip_depth or 0.0), 4)
         support = sorted(checker.support)
         # Pairs of link parts: a link with several convex parts would repeat a name pair.
         self_pairs = [list(pair) for pair in dict.fromkeys(checker.self_pair_names)]

@@ -13,7 +13,7 @@ import numpy as np
 from tampcli.geometry.reach import reach_ball
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
-from tampcli.optimize.hand import narrows, with_hand
+from tampcli.optimize.hand import CLOSING, closing_blocked, narrows, with_hand
 from tampcli.optimize.init import keyframe_guess
 from tampcli.optimize.layout import grip_block, keyframe_block
 from tampcli.optimize.nlp import FEASIBILITY
@@ -151,7 +151,7 @@ def keyframes(run: Run, warm) -> TrajectoryResult:
     the middle of each face (`_face_grips`: a peg pushed into a socket by its back face)."""
     result = keyframes_with(run, warm)
     if not result.solved and not result.proved and time.perf_counter() < run.deadline \
-            and _fingers_in_the_way(run, result):
+            and (_fingers_in_the_way(run, result) or _closing(run, result)):
         again = keyframes_with(run, warm, narrow=True)
         result = again if again.solved else result
     for grips in face_grips(run.problem, result):
@@ -176,6 +176,14 @@ def _fingers_in_the_way(run: Run, failed: TrajectoryResult) -> bool:
                                             run.start, anchors=run.anchors))
              for at, checker in ((problem, run.checker), (narrow, narrow.checker))]
     return total[1] < total[0] - FEASIBILITY
+
+
+def _closing(run: Run, failed: TrajectoryResult) -> bool:
+    """Whether the open hand's keyframes failed only where the fingers close through
+    something (hand.closing_blocked): narrowed to the grips, the keyframe NLP's
+    collision rows keep the fingers' closed side clear too."""
+    return not failed.narrowed and CLOSING in (failed.worst_constraint or "") \
+        and narrows(run.problem, failed.choices)
 
 
 def _total_violation(rows) -> float:
@@ -274,6 +282,9 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
     if out.status != "solved":
         return run.result(out.status, violation=out.violation, worst_constraint=out.worst,
                           **common)
+    blocked = closing_blocked(at, kf, choices, run.start) if collisions else None
+    if blocked:
+        return run.result("infeasible", violation=math.inf, worst_constraint=blocked, **common)
     if out.stopped == "time":
         # Feasible but far from converged: its cost would be a meaningless bound.
         return run.result("limit", violation=out.violation, worst_constraint="time limit "

@@ -12,7 +12,7 @@ from tampcli.optimize import relocate
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.grasp_report import grasp_report
-from tampcli.optimize.hand import finger_columns, with_hand
+from tampcli.optimize.hand import CLOSING, finger_columns, with_hand
 from tampcli.optimize.keyframe_stage import (
     carry_faces,
     face_grips,
@@ -327,6 +327,8 @@ def _path_through(run: Run, kfr) -> TrajectoryResult:
         problems = verify_mod.verify(problem, result, fingers=result.fingers)
         if not problems:
             return result
+        if all(CLOSING in p for p in problems):
+            break  # at the keyframes, which finer motions leave as they are
         # A collision between the sample points: sample the failing phases finer.
         failing.clear()
         failing.update({i for i, _ in verify_mod.failing_motions(problem, result,

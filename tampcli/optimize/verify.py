@@ -14,12 +14,14 @@ tool's side: that contact is touching too.
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.optimize.bodies import REST_TOLERANCE
+from tampcli.optimize.hand import closing_words, sweep_contact, sweeps
 from tampcli.optimize.path import allowed_contacts
 from tampcli.optimize.problem import TrajectoryProblem
 
@@ -63,6 +65,47 @@ def verify(problem: TrajectoryProblem, result, factor: int = 10, fingers=None) -
                       f"{len(moving)}"]
     out += _check_objects(problem, result)
     out += [msg for _, msg in failing_motions(problem, result, factor, fingers)]
+    out += _closing(problem, result, fingers)
+    return out
+
+
+def _closing(problem: TrajectoryProblem, result, fingers=None) -> list[str]:
+    """Where a grasp's fingers close (or a place's open) through something but the
+    object (hand.sweep_contact): from the opening the fingers have just before the
+    grasp (just after the place) to the object's width across the tool's y axis."""
+    if not sweeps(problem):
+        return []
+    traj = np.asarray(result.trajectory, dtype=float)
+    world = problem.world
+    hand = None if fingers is None else np.asarray(fingers, dtype=float)
+    opened = problem.hand.values if problem.hand.values is not None \
+        else world.gripper_at(0.0)[0]
+    steps = iter(problem.steps)
+    out = []
+    for pi, phase in enumerate(result.phases):
+        if phase.action is None:
+            continue
+        step = next((s for s in steps if s.name == phase.action), None)
+        if step is None:
+            break
+        if step.kind.fingers is None or step.obj is None or step.obj not in result.object_poses:
+            continue
+        w = phase.start
+        closing = step.kind.fingers is True
+        obj = _pose(result.object_poses[step.obj][pi if closing else pi + 1])
+        info = problem.bodies[step.obj]
+        R = world.tool_pose(traj[w])[:3, :3].T @ obj[:3, :3]
+        if info.disk:
+            width = 2 * (math.hypot(R[1, 0], R[1, 1]) * info.half[0] + abs(R[1, 2]) * info.half[2])
+        else:
+            width = 2 * float(np.abs(R[1]) @ np.asarray(info.half[:3]))
+        row = min(max(w - 1 if closing else w + 1, 0), len(traj) - 1)
+        start = opened if hand is None else hand[row]
+        others = {n: _pose(v[pi if closing else pi + 1]) for n, v in result.object_poses.items()
+                  if n != step.obj}
+        deep = sweep_contact(problem, traj[w], others, step.obj, start, width)
+        if deep is not None:
+            out.append(closing_words(step.name, deep))
     return out
 
 

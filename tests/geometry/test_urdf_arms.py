@@ -62,3 +62,16 @@ def test_an_arm_on_a_track_has_no_reach_ball():
         moved[0] = world.upper[0]  # the carriage at the far end of its track
         far = world.tool_pose(moved)[:3, 3]
         assert np.linalg.norm(far - start) > 1.0
+
+
+def test_check_reports_the_grippers_opening_and_fingertip_depth():
+    """robots.md names the two figures a new tool frame is checked by; blind28 found
+    no command that printed them."""
+    from tampcli.geometry.report import scene_summary
+    from tampcli.pddl import parser
+
+    domain = parser.parse_domain_file(OWN_ARM / "domain.pddl")
+    problem = parser.parse_problem_file(OWN_ARM / "p05.pddl")
+    robot = scene_summary(domain, problem, OWN_ARM / "p05.pddl")["robot"]
+    assert robot["gripper_opening"] == pytest.approx(0.08, abs=0.002)
+    assert 0.0 < robot["fingertip_depth"] < 0.03

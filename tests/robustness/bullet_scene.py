@@ -180,7 +180,29 @@ class Replay:
                 self.limits[info[1].decode()] = (info[8], info[9])
             elif info[16] in self.base_links:  # fixed to the base: stands where it does
                 self.base_links.add(j)
+        if "urdf" in robot:
+            self.arm = self._own_arm(robot, urdf, parent)
         self._self_pairs(parent)
+
+    def _own_arm(self, robot: dict, urdf: str, parent: dict[int, int]) -> Arm:
+        """A scene's own URDF arm (docs/robots.md, "Any URDF arm"): its tool link and
+        every link below it may touch what it holds; its fingers stay open (their
+        columns are not in a solution file), as the docs say the planner keeps them."""
+        tool = robot["tool_link"]
+        below = {j for j, n in self.links.items() if n == tool}
+        grew = True
+        while grew:
+            grew = False
+            for j, up in parent.items():
+                if up in below and j not in below:
+                    below.add(j)
+                    grew = True
+        spec = robot.get("fingers") or {}
+        joints = list(spec.get("joints", []))
+        opened = spec.get("open", 0.0)
+        values = opened if isinstance(opened, list) else [opened] * len(joints)
+        return Arm(urdf, tool, tuple(self.links[j] for j in sorted(below)),
+                   dict(zip(joints, (float(v) for v in values), strict=True)), False)
 
     def _self_pairs(self, parent: dict[int, int]) -> None:
         geo = [k for k in self.links if pb.getCollisionShapeData(self.robot, k,
@@ -220,6 +242,13 @@ class Replay:
             for f, value in self.arm.fingers.items():
                 if f in self.joint_index:
                     pb.resetJointState(self.robot, self.joint_index[f], value,
+                                       physicsClientId=self.c)
+            # and the joints that mimic them (a URDF arm's right finger)
+            for joint, (leader, multiplier, offset) in self.mimics.items():
+                if leader in self.arm.fingers and joint not in self.arm.fingers \
+                        and joint in self.joint_index:
+                    pb.resetJointState(self.robot, self.joint_index[joint],
+                                       multiplier * self.arm.fingers[leader] + offset,
                                        physicsClientId=self.c)
 
     def hand(self) -> np.ndarray:
