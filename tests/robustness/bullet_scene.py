@@ -276,6 +276,29 @@ class Replay:
             d = max(0.0, min(0.04, d - max(0.0, min(gaps))))
         self.set_fingers(d)
 
+    def closing_sweep(self, held: str, start: float = 0.04) -> list[tuple[str, str, float]]:
+        """(finger link, body, depth) where the prismatic fingers, closing from `start`
+        to where they touch `held` (2 mm steps), pass more than the tolerance into
+        anything but `held`: a grip with something between a finger and the object."""
+        if not self.arm.closes:
+            return []
+        self.close_fingers(held)
+        touch = pb.getJointState(self.robot, self.joint_index[next(iter(self.arm.fingers))],
+                                 physicsClientId=self.c)[0]
+        out = {}
+        fingers = {self.joint_index[f] for f in self.arm.fingers}
+        for d in np.linspace(start, touch, max(2, int(abs(start - touch) / 0.002) + 1)):
+            self.set_fingers(float(d))
+            for name, body in self.bodies.items():
+                if name == held:
+                    continue
+                for p in pb.getClosestPoints(self.robot, body, 0.0, physicsClientId=self.c):
+                    if p[3] in fingers and p[8] < -TOL_PEN:
+                        key = (self.links[p[3]], name)
+                        out[key] = min(out.get(key, 0.0), p[8])
+        self.set_fingers(float(touch))
+        return [(a, b, d) for (a, b), d in out.items()]
+
     def set_fingers(self, d: float) -> None:
         for f in self.arm.fingers:
             pb.resetJointState(self.robot, self.joint_index[f], d, physicsClientId=self.c)

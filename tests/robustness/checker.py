@@ -28,7 +28,9 @@ Rules (a penetration is a signed distance below -1 mm):
    suction grasp are contacts on a side face: touching, so checked like any
    pair (a push's pose is set by an action that spans a motion). Resting
    contact is distance about 0, which the 1 mm tolerance admits; a body
-   sunk deeper into its support is a collision.
+   sunk deeper into its support is a collision. At a grasp, prismatic
+   fingers (Panda, KUKA) closing from their opening just before it to the
+   object, 2 mm steps, pass into nothing else.
 2. attachment -- at each boundary of a phase with an attached object, the
    pose solution.json gives equals hand pose x relative pose (1 mm, 1 deg);
    an object not attached does not move across a phase (same tolerances).
@@ -239,6 +241,14 @@ def check_replay(rp: Replay, sol: dict, goal, pushes: set[str] | None = None,
             rp.set_q(names, traj[s], not own_fingers)
             rel = np.linalg.inv(rp.hand()) @ poses[att][k]
             grasped = not pushing and rp.model != "planar"
+            if grasped:
+                # The fingers close from their opening just before the grasp.
+                first = next((names.index(f) for f in FINGERS if f in names), None)
+                start = 0.04 if first is None else float(traj[max(s - 1, 0)][first])
+                for a, b, d in rp.closing_sweep(att, start):
+                    out.append(Violation("collision", where, f"{a} closes through {b} "
+                                         f"({-d * 1000:.1f} mm deep) at waypoint {s}"))
+                rp.set_q(names, traj[s], not own_fingers)
         held = att
         for t, q in _samples(traj, s, e):
             rp.set_q(names, q, not own_fingers)
