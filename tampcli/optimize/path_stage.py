@@ -14,6 +14,7 @@ from tampcli.optimize.assemble import assemble, walk
 from tampcli.optimize.grasp_report import grasp_report
 from tampcli.optimize.hand import CLOSING, finger_columns, with_hand
 from tampcli.optimize.keyframe_stage import (
+    FACE_SAME,
     carry_faces,
     face_grips,
     keyframes,
@@ -59,19 +60,28 @@ def path(run: Run, warm) -> TrajectoryResult:
     if answer is None and problem.planar and faces:
         order = _passable_first(run, warm, order, kfr.narrowed)
     carried: set[int] = set()  # the steps whose carry's faces were queued alone
+    tried: set[frozenset] = set()  # the grips whose path was solved
     while order:
         grips, start = order.pop(0)
         if result is not None and (result.solved or result.status == "bounded"
                                    or time.perf_counter() > run.deadline
                                    or _robot_in_the_way(run)):
             break
-        if grips is not None and _before_the_grips(last, grips):
+        if grips is not None and (_before_the_grips(last, grips)
+                                  or _after_the_grips(problem, last, grips)):
             continue
+        if grips is None and start is not None and start.solved \
+                and _after_the_grips(problem, last, start.keyframes.grip):
+            continue  # the NLP's own grips: as any other
         if start is None:
             run.stage = "keyframes"
             start = _face_keyframes(run, warm, grips, first=result is None, narrow=kfr.narrowed)
             run.stage = "path"
         if start.solved:
+            key = _grip_key(start.keyframes.grip)
+            if key in tried:  # a face queued again whose keyframes came out the same
+                continue
+            tried.add(key)
             last = _relocated(run, warm, grips, start, path_through(run, start))
             result = last if result is None or last.solved or _deeper(last, result) \
                 else result
@@ -200,6 +210,24 @@ def _before_the_grips(failed, grips) -> bool:
     if failed is None or failed.failed_actions is None:
         return False
     return failed.failed_actions - 1 < min(grips)
+
+
+def _after_the_grips(problem, failed, grips) -> bool:
+    """Whether the last path failed on a motion after the retreat from the place of
+    every grip `grips` turns (against the failed path's own): those motions' ends stay
+    where they were (blind27 p04: a push of b2 into a wall, then the faces of b1, put
+    down two actions before, tried for 28 s)."""
+    if failed is None or failed.failed_actions is None or not failed.keyframes:
+        return False
+    held = failed.keyframes.grip
+    turned = [i for i, t in grips.items()
+              if i in held and abs(math.remainder(t - held[i], 2 * math.pi)) > FACE_SAME]
+    if not turned:
+        return False
+    step = failed.failed_actions - 1
+    ends = {s.grasp_step: s.index for s in problem.steps
+            if s.kind.places and s.grasp_step is not None}
+    return all(i in ends and step > ends[i] + 1 for i in turned)
 
 
 def _face_keyframes(run: Run, warm, grips, first: bool, narrow: bool, fresh: bool = False):

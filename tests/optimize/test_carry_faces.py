@@ -137,3 +137,32 @@ def test_a_move_over_a_body_aims_where_the_skeleton_has_put_it():
         assert np.all(np.abs(tool - bowl) <= half + 1e-6), (tool, bowl)
         start = start[:2]
         assert math.dist(tool, start) > 0.1  # not over where the bowl stood
+
+
+def test_a_path_failing_after_every_turned_grip_tries_no_other_face(monkeypatch):
+    """blind27 p04's skeleton #6: b2 pushed home2 -> home1 -> dock runs into the wall
+    (motion 9). Before, b1's other faces (b1 put down at step 3) were tried after it,
+    each a path stage of its own: 31 s to the same failure. Changing b1's grip moves
+    nothing from the retreat after its place on."""
+    from tampcli.optimize import path_stage
+
+    paths = []
+    path_through = path_stage.path_through
+
+    def counted(run, kfr):
+        out = path_through(run, kfr)
+        paths.append(out.worst_constraint)
+        return out
+
+    monkeypatch.setattr(path_stage, "path_through", counted)
+    plan = ("(push crate door lane)", "(push crate lane crate-goal)", "(pick b1 home1)",
+            "(place b1 dock)", "(push b2 home2 home1)", "(push b2 home1 dock)")
+    with lowered_folder(PROBLEMS / "blind27" / "p04", "p04", ops(*plan)) as problem:
+        kf = solve(problem, "keyframes")
+        assert kf.status == "solved"
+        out = solve(problem, "path", warm=kf)
+    assert not out.solved
+    assert "(push b2 home1 dock)" in out.worst_constraint
+    # nothing was tried after the first path that reached the push into the wall
+    first = next(i for i, why in enumerate(paths) if "(push b2 home1 dock)" in why)
+    assert first == len(paths) - 1, paths
