@@ -9,6 +9,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+import traceback
 
 from tampcli import __version__
 from tampcli.cli.ui import UI
@@ -89,6 +90,9 @@ def main(argv: list[str] | None = None, ui: UI | None = None) -> int:
         return 130
     except Exception as err:  # a bug: say so, point at --traceback
         if traceback_wanted:
-            raise
+            # The traceback, and the same exit code as without it (blind29: 1 before).
+            traceback.print_exc(file=sys.stderr)
+            ui.error(f"internal error: {type(err).__name__}: {err}")
+            return ExitCode.INTERNAL
         ui.error(f"internal error: {type(err).__name__}: {err} (rerun with --traceback)")
         return ExitCode.INTERNAL

@@ -231,7 +231,10 @@ class CollisionChecker:
         reach = batch.activation + self._pad
         held_poses = frames[rows, self._tool] @ grasps  # (G, 4, 4)
         table = self._held(name)
-        boxes = Boxes(held_poses[:, None], table)  # (G, H, ...)
+        # One frame per (row, part): the hull screen indexes frames by both (a mesh of
+        # several convex parts held: blind29 p03's duck, an IndexError before).
+        boxes = Boxes(np.broadcast_to(held_poses[:, None], (len(held_poses), len(table.parts),
+                                                            4, 4)), table)  # (G, H, ...)
         tool = np.full(len(table.parts), self._tool)
         # Vs bodies (per row when each row has its own world state).
         b = bodies

@@ -75,3 +75,40 @@ def test_check_reports_the_grippers_opening_and_fingertip_depth():
     robot = scene_summary(domain, problem, OWN_ARM / "p05.pddl")["robot"]
     assert robot["gripper_opening"] == pytest.approx(0.08, abs=0.002)
     assert 0.0 < robot["fingertip_depth"] < 0.03
+
+
+def test_a_held_mesh_of_several_convex_parts_is_measured_as_where_it_rests():
+    """blind29 p03: the SCARA (or the Panda) holding pybullet_data's duck, a mesh of
+    several convex parts: the hull screen indexed the held boxes by part and crashed
+    (IndexError, exit 70). Held, the duck keeps the distances it has set down at the
+    same pose (the bodies' code path)."""
+    from tampcli.geometry import transforms
+    from tampcli.geometry.collision import CollisionChecker
+
+    folder = ROOT / "problems" / "blind29" / "p03"
+    with World(build_scene(read_toml(str(folder / "p03.scene.toml")))) as world:
+        checker = CollisionChecker(world)
+        assert len(checker._held("duck").parts) > 1
+        rng = np.random.default_rng(3)
+        compared = 0
+        for _ in range(5):
+            q = rng.uniform(world.lower, world.upper)
+            tool = world.tool_pose(q)
+            grasp = transforms.pose(None, (0.0, 0.0, -0.05))
+            held = checker.distances(q, held=("duck", grasp), activation=0.5)
+            rest = checker.distances(q, body_poses={"duck": tool @ grasp}, activation=0.5,
+                                     static=True)
+            by_held = {}
+            for c in held:
+                if c.a == "held:duck":
+                    by_held[c.b] = min(by_held.get(c.b, np.inf), c.distance)
+            by_rest = {}
+            for c in rest:
+                if "body:duck" in (c.a, c.b):
+                    other = c.b if c.a == "body:duck" else c.a
+                    by_rest[other] = min(by_rest.get(other, np.inf), c.distance)
+            for other, d in by_held.items():
+                if other in by_rest:
+                    assert d == pytest.approx(by_rest[other], abs=1e-5), other
+                    compared += 1
+        assert compared >= 5
