@@ -11,9 +11,10 @@ import time
 import numpy as np
 
 from tampcli.geometry.reach import reach_ball
+from tampcli.optimize.closing import CLOSING, closing_blocked
 from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
-from tampcli.optimize.hand import CLOSING, closing_blocked, narrows, with_hand
+from tampcli.optimize.hand import narrows, with_hand
 from tampcli.optimize.init import keyframe_guess
 from tampcli.optimize.layout import grip_block, keyframe_block
 from tampcli.optimize.nlp import FEASIBILITY
@@ -180,7 +181,7 @@ def _fingers_in_the_way(run: Run, failed: TrajectoryResult) -> bool:
 
 def _closing(run: Run, failed: TrajectoryResult) -> bool:
     """Whether the open hand's keyframes failed only where the fingers close through
-    something (hand.closing_blocked): narrowed to the grips, the keyframe NLP's
+    something (closing.closing_blocked): narrowed to the grips, the keyframe NLP's
     collision rows keep the fingers' closed side clear too."""
     return not failed.narrowed and CLOSING in (failed.worst_constraint or "") \
         and narrows(run.problem, failed.choices)

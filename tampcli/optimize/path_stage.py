@@ -11,8 +11,9 @@ import time
 from tampcli.optimize import relocate
 from tampcli.optimize import verify as verify_mod
 from tampcli.optimize.assemble import assemble, walk
+from tampcli.optimize.closing import CLOSING
 from tampcli.optimize.grasp_report import grasp_report
-from tampcli.optimize.hand import CLOSING, finger_columns, with_hand
+from tampcli.optimize.hand import finger_columns, with_hand
 from tampcli.optimize.keyframe_stage import (
     FACE_SAME,
     carry_faces,

@@ -21,7 +21,7 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.optimize.bodies import REST_TOLERANCE
-from tampcli.optimize.hand import closing_words, sweep_contact, sweeps
+from tampcli.optimize.closing import closing_words, sweep_contact, sweeps
 from tampcli.optimize.path import allowed_contacts
 from tampcli.optimize.problem import TrajectoryProblem
 
@@ -71,7 +71,7 @@ def verify(problem: TrajectoryProblem, result, factor: int = 10, fingers=None) -
 
 def _closing(problem: TrajectoryProblem, result, fingers=None) -> list[str]:
     """Where a grasp's fingers close (or a place's open) through something but the
-    object (hand.sweep_contact): from the opening the fingers have just before the
+    object (closing.sweep_contact): from the opening the fingers have just before the
     grasp (just after the place) to the object's width across the tool's y axis."""
     if not sweeps(problem):
         return []

@@ -1,4 +1,4 @@
-"""The fingers must close on what they grasp through nothing else (hand.sweep_contact):
+"""The fingers must close on what they grasp through nothing else (closing.sweep_contact):
 blind28 p04, written blind, where the KUKA's open fingers came down outside 1 cm rails
 3 mm from each part and the grip was accepted by planning, `validate` and the physics
 replay (its fixed constraint holds the part whatever is between)."""
@@ -8,7 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from tampcli.optimize import keyframe_stage, verify
-from tampcli.optimize.hand import CLOSING
+from tampcli.optimize.closing import CLOSING
 from tampcli.optimize.solve import solve
 
 from .helpers import lowered_folder, ops
