@@ -195,7 +195,7 @@ def test_finger_columns_are_where_the_collision_check_puts_the_fingers(arm, vali
     data, _ = arm
     _, run = validate(add_fingers(data, lambda i: 0.0 if i <= 10 else opening(i)))
     assert run.code == 1
-    assert "motion before (pick a start): collision panda_" in run.out
+    assert "motion 0 before (pick a start): collision panda_" in run.out
     assert "finger vs a" in run.out
 
 

@@ -177,7 +177,7 @@ def _held_against_tool(problem, m, q, others, held):
 
 def _label(problem, k) -> str:
     step = problem.step_of_keyframe(k)
-    return step.name if problem.motions[k].own else f"motion before {step.name}"
+    return step.name if problem.motions[k].own else f"motion {k} before {step.name}"
 
 
 def _check_objects(problem: TrajectoryProblem, result) -> list[str]:
