@@ -286,15 +286,18 @@ def _bodies_table(bodies: list[dict]) -> Table:
     table = Table(title=f"bodies ({len(bodies)}; m; an obstacle is fixed and not in the problem)",
                   title_justify="left")
     rotated = any(_rotation(b["pose"][3:7]) != "-" for b in bodies)
-    columns = ["name", "shape, size", "position"] + ["rotation"] * rotated + ["fixed"]
+    weighed = any("mass" in b for b in bodies)
+    columns = ["name", "shape, size", "position"] + ["rotation"] * rotated + ["fixed"] \
+        + ["mass (kg)"] * weighed
     for column in columns:
         # Nothing is cut on a narrow terminal: numbers stay on one line, names fold.
         table.add_column(column, no_wrap=column in ("shape, size", "position"), overflow="fold")
     for b in bodies[:TABLE_ROWS]:
         fixed = ("obstacle" if b.get("obstacle") else "yes") if b["fixed"] else "no"
         rotation = [_rotation(b["pose"][3:7])] * rotated
+        mass = [f"{b['mass']:g}" if "mass" in b else "-"] * weighed
         table.add_row(b["name"], f"{b['shape']} {_size(b)}", _xyz(b["pose"][:3]), *rotation,
-                      fixed)
+                      fixed, *mass)
     if len(bodies) > TABLE_ROWS:
         table.add_row(f"... {len(bodies) - TABLE_ROWS} more (see --json)",
                       *[""] * (len(columns) - 1))

@@ -111,6 +111,8 @@ def _body(body) -> dict:
     if body.shape in ("mesh", "urdf"):
         out["file"] = body.mesh or body.urdf
         out["scale"] = list(body.scale)
+    if getattr(body, "mass", None) is not None:
+        out["mass"] = float(body.mass)  # kg, as the scene gives it
     return out
 
 

@@ -112,3 +112,17 @@ def test_a_held_mesh_of_several_convex_parts_is_measured_as_where_it_rests():
                     assert d == pytest.approx(by_rest[other], abs=1e-5), other
                     compared += 1
         assert compared >= 5
+
+
+def test_check_shows_the_masses_a_scene_gives():
+    """blind29 p05 (a seesaw whose balance the masses decide): `check` showed none."""
+    from tampcli.geometry.report import scene_summary
+    from tampcli.pddl import parser
+
+    folder = ROOT / "problems" / "blind29" / "p05"
+    domain = parser.parse_domain_file(folder / "domain.pddl")
+    problem = parser.parse_problem_file(folder / "p05.pddl")
+    bodies = {b["name"]: b for b in scene_summary(domain, problem, folder / "p05.pddl")["bodies"]}
+    assert bodies["heavy"]["mass"] == pytest.approx(0.35)
+    assert bodies["light"]["mass"] == pytest.approx(0.11)
+    assert "mass" not in bodies["table"]
