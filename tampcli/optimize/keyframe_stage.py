@@ -109,8 +109,16 @@ def solve_placements(run: Run, origins: dict | None = None, like: dict | None = 
         candidates = [lambda _problem: (given, origins)]
     else:
         candidates = starts(problem)
+    seen = set()
     for start in candidates:
         placements, origins = start(problem)
+        key = tuple(sorted((i, round(p.x, 6), round(p.y, 6), round(p.yaw, 6))
+                           for i, p in placements.items())) + tuple(
+            sorted((i, round(float(o[0]), 6), round(float(o[1]), 6))
+                   for i, o in origins.items()))
+        if key in seen:  # shelves of one object each are the middle start again
+            continue
+        seen.add(key)
         out = run.nlp(lambda x, origins=origins: final_rows(problem, layout.unpack(x), origins),
                       layout, layout.pack(placement_blocks(placements)), bounds)
         if best is None or out.status == "solved" or out.violation < best[0].violation:
