@@ -62,10 +62,11 @@ def grasp_width(problem, choices: dict) -> float | None:
     return max(widths) if widths else None
 
 
-def hand_for(world, width: float | None, clearance: float = CLEARANCE) -> Hand:
+def hand_for(world, width: float | None, clearance: float = CLEARANCE,
+             bisections: int = _BISECTIONS) -> Hand:
     """The hand opened to `width` + 2 `clearance` (the most closed fraction whose
-    measured opening is at least that), fully open when that is as wide as it goes
-    or `width` is None."""
+    measured opening is at least that, found by `bisections` halvings of the fingers'
+    travel), fully open when that is as wide as it goes or `width` is None."""
     full = open_hand(world)
     if width is None or full.opening is None or width + 2 * clearance >= full.opening:
         return full
@@ -74,7 +75,7 @@ def hand_for(world, width: float | None, clearance: float = CLEARANCE) -> Hand:
     if world.gripper_at(hi)[1] >= need:
         lo = hi
     else:
-        for _ in range(_BISECTIONS):
+        for _ in range(bisections):
             mid = 0.5 * (lo + hi)
             if world.gripper_at(mid)[1] >= need:
                 lo = mid
@@ -105,12 +106,15 @@ def narrows(problem, choices: dict) -> bool:
     return hand_of(problem, choices) != problem.hand
 
 
-def _cached(problem, width: float | None, clearance: float) -> Hand:
-    """hand_for, kept in the problem's `memo` (a bisection of World measurements)."""
-    key = (None if width is None else round(width, 6), clearance)
-    if key not in problem.memo:
-        problem.memo[key] = hand_for(problem.world, width, clearance)
-    return problem.memo[key]
+def _cached(problem, width: float | None, clearance: float,
+            bisections: int = _BISECTIONS) -> Hand:
+    """hand_for, kept in the World's `measures` for every skeleton (a bisection of World
+    measurements: 0.06 s on the xArm6, paid per skeleton when kept per problem)."""
+    key = ("hand", None if width is None else round(width, 6), clearance, bisections)
+    measures = problem.world.measures
+    if key not in measures:
+        measures[key] = hand_for(problem.world, width, clearance, bisections)
+    return measures[key]
 
 
 def with_hand(problem, choices: dict):

@@ -44,8 +44,8 @@ class TrajectoryProblem:
     # optimize.hand.Hand: the fingers' opening throughout (`checker` holds them there);
     # open as lowered, narrowed to the grips chosen (hand.with_hand)
     hand: object = field(default=None, repr=False)
-    # World measurements kept per skeleton: hand.hand_for's by (width, clearance), and
-    # world_state.reach_of's ball under "reach"
+    # World measurements kept per skeleton: world_state.reach_of's ball under "reach"
+    # (hand.hand_for's are kept in World.measures, for every skeleton)
     memo: dict = field(default_factory=dict, repr=False)
 
     @property

@@ -49,6 +49,9 @@ class World(GripperQueries):
         self.scene = scene
         self.visuals = visuals
         self._ik = IkMemo()
+        # Measurements of this robot that depend on nothing else, kept by whoever makes
+        # them for the next skeleton (optimize/hand.py: the hand's opening per width).
+        self.measures: dict = {}
         self._pb = pybullet
         self._client = pybullet.connect(pybullet.DIRECT)
         try:
