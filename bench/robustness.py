@@ -201,6 +201,13 @@ BLIND28 = {"p01": ("rovers: calibrate, image, sample, communicate (planar)", 9),
            "p04": ("singulation: a push-only crate wedged between two parts (KUKA)", 5),
            "p05": ("sensing: clear a camera's sightline, park, look (own URDF arm)", 8),
            "p06": ("a track-mounted URDF arm exchanging parts between stations", 6)}
+# problems/blind29, written blind against 5ede6ec (p01) and 27fc142 (p02-p06).
+BLIND29 = {"p01": ("reach through a 28 cm window into a closed booth (Panda)", 4),
+           "p02": ("a wall-mounted KUKA clears and fills the slot under its mount", 4),
+           "p03": ("an own SCARA folds past a column; a mesh, a ball and a can", 6),
+           "p04": ("lock and key: a key unlocks a push-only screen (planar)", 5),
+           "p05": ("a seesaw balanced by a counterweight first (xArm6, masses)", 4),
+           "p06": ("a battery recharged by a move into a dock alcove (planar)", 7)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -225,7 +232,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind20", BLIND20), ("blind21", BLIND21), ("blind22", BLIND22),
             ("blind23", BLIND23), ("blind24", BLIND24),
             ("blind25", BLIND25), ("blind26", BLIND26),
-            ("blind27", BLIND27), ("blind28", BLIND28),
+            ("blind27", BLIND27), ("blind28", BLIND28), ("blind29", BLIND29),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
