@@ -257,9 +257,17 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
         else:
             bounds.append((-GRIP_BOUND, GRIP_BOUND))
     best = None
-    for attempt in range(2 if retries else 1):
+    # A planar skeleton's third try ranks the place's faces by whether the disk stands
+    # inside something there (init.GuessWalk.inside); its failure is not reported, so
+    # a skeleton the first two tries fail on fails as it did (what the search learns
+    # from it unchanged: blind18 p04's corridor loses its answer otherwise).
+    attempts = (2 + problem.planar) if retries else 1
+    for attempt in range(attempts):
+        if attempt == 2 and (best[0].status == "solved" or time.perf_counter() > run.deadline):
+            break
         guess, choices = keyframe_guess(problem, placements, run.start, run.rng,
-                                        jitter=RETRY_JITTER if attempt else 0.0)
+                                        jitter=RETRY_JITTER if attempt == 1 else 0.0,
+                                        inside=attempt == 2)
         if attempt == 0 and _shares_prefix(problem, warm):
             choices.update(warm.choices)
             guess = guess.warmed(warm.keyframes)
@@ -274,7 +282,10 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
                                  run.start, collisions=collisions, anchors=run.anchors)
 
         out = run.nlp(evaluate, layout, layout.pack(guess.blocks()), bounds)
-        if best is None or (out.status == "solved") or out.violation < best[0].violation:
+        if attempt == 2 and out.status != "solved" and collisions:
+            out = _tight_keyframes(run, layout, bounds, out, choices, at, checker)
+        if best is None or (out.status == "solved") or (
+                attempt < 2 and out.violation < best[0].violation):
             best = (out, choices, at, checker)
         if out.status == "solved" or time.perf_counter() > run.deadline:
             break

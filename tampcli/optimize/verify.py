@@ -135,9 +135,20 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10, finger
         found_all = checker.distances_many(qs, others, held, ignores, 0.0,
                                            fingers=None if hand is None else
                                            _along(hand, phase.start, n_seg, taus))
+        # What the motion leaves (in its first segment) or enters (in its last) may be
+        # as deep there as at its keyframe, no deeper: a mesh's hull, grown by PyBullet's
+        # 1 mm margin, rests 1 mm into its support (blind30 p06: every pick of a mesh
+        # failed `collision part vs bench: -0.1 cm` at the pick's waypoint).
+        ends = {0: _depths(found_all[0], m.leave_contact),
+                n_seg: _depths(found_all[-1], m.enter_contact)}
         for tau, found in zip(taus.tolist(), found_all, strict=True):
+            end = ends[0] if tau < 1 else ends[n_seg] if tau > n_seg - 1 else {}
             for c in found:
-                if c.distance < -PENETRATION and (worst is None or c.distance < worst[0]):
+                if c.distance >= -PENETRATION:
+                    continue
+                if c.distance >= end.get((c.a, c.b), 0.0) - PENETRATION:
+                    continue
+                if worst is None or c.distance < worst[0]:
                     worst = (c.distance, tau, c)
         if worst is not None:
             d, tau, c = worst
@@ -145,6 +156,20 @@ def failing_motions(problem: TrajectoryProblem, result, factor: int = 10, finger
                            f"{c.b.partition(':')[2]}: {100 * d:.1f} cm at waypoint "
                            f"{phase.start + tau:.1f}"))
     return out
+
+
+RESTING_DEPTH = 2.5e-3  # m: the deepest a held object may rest on what it leaves or enters
+
+
+def _depths(contacts, bodies: frozenset[str]) -> dict[tuple[str, str], float]:
+    """(a, b) -> signed distance of the held object's contacts with one of `bodies`
+    (names) at a motion's end keyframe, where deeper than the tolerance but no deeper
+    than RESTING_DEPTH (a mesh's grown hull on its support); deeper is a collision
+    there as anywhere."""
+    return {(c.a, c.b): c.distance for c in contacts
+            if -RESTING_DEPTH <= c.distance < -PENETRATION
+            and "held:" in c.a + c.b
+            and (c.a.partition(":")[2] in bodies or c.b.partition(":")[2] in bodies)}
 
 
 def _along(values: np.ndarray, start: int, n_seg: int, taus: np.ndarray) -> np.ndarray:

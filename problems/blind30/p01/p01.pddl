@@ -1,0 +1,5 @@
+(define (problem b30-p01) (:domain b30-scan)
+  (:objects block - item pad shelf - zone)
+  (:init (at block pad) (handempty) (= (total-cost) 0))
+  (:goal (at block shelf))
+  (:metric minimize (total-cost)))

@@ -1,0 +1,5 @@
+(define (problem b30-p02) (:domain b30-restack)
+  (:objects crate can ball - item src goal side-a side-b ball-home - zone)
+  (:init (at crate src) (on can crate) (at ball ball-home) (handempty))
+  (:goal (and (at crate goal) (at ball side-b)
+              (or (at can side-a) (on can crate)))))

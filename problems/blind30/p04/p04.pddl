@@ -1,0 +1,6 @@
+(define (problem b30-p04) (:domain b30-sortpark)
+  (:objects puck ball - item puck-home ball-home bin-a bin-b park - zone)
+  (:init (at puck puck-home) (at ball ball-home) (handempty)
+         (bin bin-a) (bin bin-b) (park-spot park) (= (total-cost) 0))
+  (:goal (and (forall (?o - item) (sorted ?o)) (parked)))
+  (:metric minimize (total-cost)))

@@ -1,0 +1,11 @@
+; blind30 p05: two objects onto supports at different heights (Panda on a URDF table).
+(define (domain b30-heights)
+  (:requirements :strips :typing :existential-preconditions)
+  (:types item zone)
+  (:predicates (at ?o - item ?z - zone) (holding ?o - item) (handempty) (elevated ?z - zone))
+  (:action pick :parameters (?o - item ?z - zone)
+    :precondition (and (at ?o ?z) (handempty))
+    :effect (and (not (at ?o ?z)) (holding ?o) (not (handempty))))
+  (:action place :parameters (?o - item ?z - zone)
+    :precondition (holding ?o)
+    :effect (and (at ?o ?z) (handempty) (not (holding ?o)))))

@@ -1,0 +1,5 @@
+(define (problem b30-p05) (:domain b30-heights)
+  (:objects jar brick - item pad brick-home high tilted-spot - zone)
+  (:init (at jar pad) (at brick brick-home) (handempty) (elevated high) (elevated tilted-spot))
+  (:goal (and (at brick tilted-spot)
+              (exists (?z - zone) (and (elevated ?z) (at jar ?z))))))
