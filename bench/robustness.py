@@ -208,6 +208,13 @@ BLIND29 = {"p01": ("reach through a 28 cm window into a closed booth (Panda)", 4
            "p04": ("lock and key: a key unlocks a push-only screen (planar)", 5),
            "p05": ("a seesaw balanced by a counterweight first (xArm6, masses)", 4),
            "p06": ("a battery recharged by a move into a dock alcove (planar)", 7)}
+# problems/blind30, written blind against bb2af7a (input-format breadth).
+BLIND30 = {"p01": ("a movable mesh cube to a raised region, a fixed mesh rock (Panda)", 3),
+           "p02": ("a can resting on a crate, a sphere, a disjunctive goal (KUKA)", 6),
+           "p03": ("an arm's push of a crate too wide to grip, a lying cylinder (xArm6)", 3),
+           "p04": ("a sphere and a cylinder round a wall, a move to park (planar)", 5),
+           "p05": ("URDF furniture, supports at three heights, a turned region (Panda)", 4),
+           "p06": ("a mesh with non-uniform scale past a fixed .stl scanner (xArm6)", 4)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -233,6 +240,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind23", BLIND23), ("blind24", BLIND24),
             ("blind25", BLIND25), ("blind26", BLIND26),
             ("blind27", BLIND27), ("blind28", BLIND28), ("blind29", BLIND29),
+            ("blind30", BLIND30),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
