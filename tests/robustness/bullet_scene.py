@@ -19,6 +19,7 @@ import pybullet_data
 import tomllib
 
 TOL_PEN, TOL_REST = 1e-3, 5e-3
+MESH_MARGIN = 1e-3  # m: PyBullet's collision margin on a mesh's hull
 ROOT = Path(__file__).resolve().parents[2]
 
 
@@ -31,6 +32,13 @@ class Arm:
     grip_links: tuple[str, ...]  # may touch what the hand holds
     fingers: dict  # finger joint -> its value when open
     closes: bool  # prismatic fingers this checker closes on a held object
+
+
+def _found(name: str, folder: Path) -> str:
+    """A scene's mesh or URDF file: beside the scene, else in pybullet_data (as
+    docs/scene.md says files are looked for)."""
+    here = folder / name
+    return str(here) if here.exists() else _data(name)
 
 
 def _data(path: str) -> str:
@@ -138,17 +146,19 @@ class Replay:
     def _body(self, obj: dict, folder: Path) -> int:
         pos, quat = pose_of(obj["pose"])
         shape, size = obj["shape"], obj.get("size", [])
+        scale = obj.get("scale", 1.0)  # one number, or one per axis (a mesh's)
+        scale = [float(scale)] * 3 if isinstance(scale, (int, float)) else list(scale)
         if shape == "urdf":
-            return pb.loadURDF(str(folder / obj["urdf"]), pos, quat, useFixedBase=True,
-                               physicsClientId=self.c)
+            return pb.loadURDF(_found(obj["urdf"], folder), pos, quat, useFixedBase=True,
+                               globalScaling=scale[0], physicsClientId=self.c)
         # Built for the shape at hand only: a sphere's size has one number.
         kw = {"box": lambda: dict(shapeType=pb.GEOM_BOX, halfExtents=[s / 2 for s in size]),
               "cylinder": lambda: dict(shapeType=pb.GEOM_CYLINDER, radius=size[0],
                                        height=size[1]),
               "sphere": lambda: dict(shapeType=pb.GEOM_SPHERE, radius=size[0]),
               "mesh": lambda: dict(shapeType=pb.GEOM_MESH,
-                                   fileName=str(folder / obj.get("mesh", "")),
-                                   meshScale=obj.get("scale", [1.0, 1.0, 1.0]))}[shape]()
+                                   fileName=_found(obj.get("mesh", ""), folder),
+                                   meshScale=scale)}[shape]()
         col = pb.createCollisionShape(physicsClientId=self.c, **kw)
         return pb.createMultiBody(0.0, col, -1, pos, quat, physicsClientId=self.c)
 
@@ -327,9 +337,13 @@ class Replay:
             for b in names[i + 1:]:
                 if not (everything and (a in movable or b in movable)) and held not in (a, b):
                     continue
+                # PyBullet grows a mesh's convex hull by its 1 mm collision margin: a
+                # mesh resting on its support measures 1 mm deep (docs/scene.md).
+                tol = TOL_PEN + MESH_MARGIN * sum(
+                    self.info.get(n, {}).get("shape") == "mesh" for n in (a, b))
                 for p in pb.getClosestPoints(self.bodies[a], self.bodies[b], 0.0,
                                              physicsClientId=self.c):
-                    if p[8] < -TOL_PEN:
+                    if p[8] < -tol:
                         out.append((a, b, p[8]))
         if self.model != "planar":
             for a, b in self.self_pairs:

@@ -27,8 +27,10 @@ Rules (a penetration is a signed distance below -1 mm):
    other with nothing between them). A pushed object and the planar robot's
    suction grasp are contacts on a side face: touching, so checked like any
    pair (a push's pose is set by an action that spans a motion). Resting
-   contact is distance about 0, which the 1 mm tolerance admits; a body
-   sunk deeper into its support is a collision. At a grasp, prismatic
+   contact is distance about 0, which the 1 mm tolerance admits (for a mesh,
+   whose hull PyBullet grows by a 1 mm margin, 2 mm); a body sunk deeper
+   into its support is a collision. Mesh and URDF files are looked for
+   beside the scene, then in pybullet_data; `scale` is one number or three. At a grasp, prismatic
    fingers (Panda, KUKA) closing from their opening just before it to the
    object, 2 mm steps, pass into nothing else.
 2. attachment -- at each boundary of a phase with an attached object, the
