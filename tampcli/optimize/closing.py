@@ -34,8 +34,7 @@ def closing_blocked(problem, keyframes, choices, start) -> str | None:
     the part was gripped with a rail between each finger and its face)."""
     if not sweeps(problem):
         return None
-    opened = problem.hand.values if problem.hand.values is not None \
-        else problem.world.gripper_at(0.0)[0]
+    opened = opened_hand(problem)
     for ctx in walk(problem, keyframes, choices, start):
         step = problem.step_of_keyframe(ctx.index)
         if step is None or step.kind.fingers is None or step.obj is None:
@@ -55,6 +54,12 @@ def sweeps(problem) -> bool:
     """Whether the closing sweep applies: an arm with fingers (a URDF arm's too)."""
     return not problem.planar and problem.world.gripper_opening is not None \
         and problem.checker is not None
+
+
+def opened_hand(problem) -> tuple[float, ...]:
+    """The finger joints' values of the hand the plan keeps (open, or narrowed)."""
+    hand = problem.hand.values
+    return hand if hand is not None else problem.world.gripper_at(0.0)[0]
 
 
 def sweep_contact(problem, q, others: dict, obj: str, opened, width: float):

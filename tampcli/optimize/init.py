@@ -35,16 +35,16 @@ class GuessWalk:
     QUARTERS = (0.0, 0.5 * math.pi, math.pi, -0.5 * math.pi)
 
     def __init__(self, problem: TrajectoryProblem, placements, start, rng, jitter: float,
-                 inside: bool = False):
+                 graded: bool = False):
         self.problem = problem
         self.world = problem.world
         self.planar = problem.planar
         self.placements = placements  # step index -> values.Placement
         self.rng = rng
         self.jitter = jitter
-        # The planar place's faces ranked by whether the disk would stand inside
-        # something there too (kinds/place.py): the keyframe stage's last try.
-        self.inside = inside
+        # The planar place's faces ranked by how deep within the margin the disk would
+        # stand, to the millimetre (kinds/place.py): the keyframe stage's last try.
+        self.graded = graded
         self.q: dict[int, np.ndarray] = {}  # keyframe -> configuration
         self.grip: dict[int, float] = {}  # step -> grip parameter
         self.choices: dict[int, GripChoice] = {}
@@ -118,14 +118,14 @@ class GuessWalk:
 
 
 def keyframe_guess(problem: TrajectoryProblem, placements, start, rng,
-                   jitter: float = 0.0, inside: bool = False
+                   jitter: float = 0.0, graded: bool = False
                    ) -> tuple[Keyframes, dict[int, GripChoice]]:
     """IK keyframes following the actions; returns (keyframes, discrete grip choices).
 
     `placements`: step index -> values.Placement. `jitter` (rad) perturbs the
     IK seeds: a retry then lands in another IK branch.
     """
-    walk = GuessWalk(problem, placements, start, rng, jitter, inside)
+    walk = GuessWalk(problem, placements, start, rng, jitter, graded)
     for step in problem.steps:
         step.kind.guess(walk, step)
     if not problem.planar:

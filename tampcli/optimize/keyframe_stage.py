@@ -257,17 +257,15 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
         else:
             bounds.append((-GRIP_BOUND, GRIP_BOUND))
     best = None
-    # A planar skeleton's third try ranks the place's faces by whether the disk stands
-    # inside something there (init.GuessWalk.inside); its failure is not reported, so
+    # A planar skeleton's third try ranks the place's faces by how deep within the
+    # margin the disk stands (init.GuessWalk.graded); its failure is not reported, so
     # a skeleton the first two tries fail on fails as it did (what the search learns
     # from it unchanged: blind18 p04's corridor loses its answer otherwise).
     attempts = (2 + problem.planar) if retries else 1
-    for attempt in range(attempts):
-        if attempt == 2 and (best[0].status == "solved" or time.perf_counter() > run.deadline):
-            break
+    for attempt in range(attempts):  # each ends the loop once solved or out of time
         guess, choices = keyframe_guess(problem, placements, run.start, run.rng,
                                         jitter=RETRY_JITTER if attempt == 1 else 0.0,
-                                        inside=attempt == 2)
+                                        graded=attempt == 2)
         if attempt == 0 and _shares_prefix(problem, warm):
             choices.update(warm.choices)
             guess = guess.warmed(warm.keyframes)

@@ -21,7 +21,7 @@ import numpy as np
 
 from tampcli.geometry import transforms
 from tampcli.optimize.bodies import REST_TOLERANCE
-from tampcli.optimize.closing import closing_words, sweep_contact, sweeps
+from tampcli.optimize.closing import closing_words, opened_hand, sweep_contact, sweeps
 from tampcli.optimize.path import allowed_contacts
 from tampcli.optimize.problem import TrajectoryProblem
 
@@ -78,8 +78,7 @@ def _closing(problem: TrajectoryProblem, result, fingers=None) -> list[str]:
     traj = np.asarray(result.trajectory, dtype=float)
     world = problem.world
     hand = None if fingers is None else np.asarray(fingers, dtype=float)
-    opened = problem.hand.values if problem.hand.values is not None \
-        else world.gripper_at(0.0)[0]
+    opened = opened_hand(problem)
     steps = iter(problem.steps)
     out = []
     for pi, phase in enumerate(result.phases):

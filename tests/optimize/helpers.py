@@ -109,3 +109,12 @@ def solved_in_physics(cli, folder: Path, tmp_path: Path, time_limit: int = 60,
     data = json.loads(run.out)
     assert run.code == 0, data["violations"]
     return data["physics"]
+
+
+def path_from_keyframes(problem):
+    """The path stage of `problem` warm from its keyframes, which must solve."""
+    from tampcli.optimize.solve import solve
+
+    kf = solve(problem, "keyframes")
+    assert kf.solved, kf.worst_constraint
+    return solve(problem, "path", warm=kf)

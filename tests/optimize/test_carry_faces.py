@@ -13,7 +13,7 @@ import pytest
 from tampcli.optimize.keyframe_stage import FACE_SAME, carry_faces
 from tampcli.optimize.solve import solve
 
-from .helpers import lowered_folder, ops
+from .helpers import lowered_folder, ops, path_from_keyframes
 
 PROBLEMS = Path(__file__).resolve().parents[2] / "problems"
 # blind8 p04: a plug out of its doorway, two crates through it, the plug back in.
@@ -108,9 +108,7 @@ def test_the_screening_turns_each_boxs_face_from_the_grips_that_freed_the_other(
     plan = ("(push crate door lane)", "(push crate lane crate-goal)", "(pick b1 home1)",
             "(place b1 dock)", "(pick b2 home2)", "(place b2 dock)")
     with lowered_folder(PROBLEMS / "blind27" / "p04", "p04", ops(*plan)) as problem:
-        kf = solve(problem, "keyframes")
-        assert kf.status == "solved"
-        out = solve(problem, "path", warm=kf)
+        out = path_from_keyframes(problem)
         assert out.status == "solved", out.worst_constraint
         for step in (2, 4):  # each box held on the face that leads it through the door
             assert abs(math.cos(out.keyframes.grip[step])) == pytest.approx(1.0, abs=0.05)
@@ -158,9 +156,7 @@ def test_a_path_failing_after_every_turned_grip_tries_no_other_face(monkeypatch)
     plan = ("(push crate door lane)", "(push crate lane crate-goal)", "(pick b1 home1)",
             "(place b1 dock)", "(push b2 home2 home1)", "(push b2 home1 dock)")
     with lowered_folder(PROBLEMS / "blind27" / "p04", "p04", ops(*plan)) as problem:
-        kf = solve(problem, "keyframes")
-        assert kf.status == "solved"
-        out = solve(problem, "path", warm=kf)
+        out = path_from_keyframes(problem)
     assert not out.solved
     assert "(push b2 home1 dock)" in out.worst_constraint
     # nothing was tried after the first path that reached the push into the wall

@@ -11,7 +11,7 @@ from tampcli.optimize import keyframe_stage, verify
 from tampcli.optimize.closing import CLOSING
 from tampcli.optimize.solve import solve
 
-from .helpers import lowered_folder, ops
+from .helpers import lowered_folder, ops, path_from_keyframes
 
 RAILS = Path(__file__).resolve().parents[2] / "problems" / "blind28" / "p04"
 THROUGH_RAILS = ("(pick p2 p2-home)", "(place p2 goal2)", "(pick p1 p1-home)",
@@ -32,17 +32,13 @@ def test_verify_finds_the_rail_on_its_own(monkeypatch):
     the path stage and of `validate`) names the rail from the trajectory alone."""
     monkeypatch.setattr(keyframe_stage, "closing_blocked", lambda *args: None)
     with lowered_folder(RAILS, "p04", ops(*THROUGH_RAILS)) as problem:
-        kf = solve(problem, "keyframes")
-        assert kf.solved
-        path = solve(problem, "path", warm=kf)
+        path = path_from_keyframes(problem)
         assert not path.solved
         assert path.worst_constraint.startswith("(pick p2 p2-home): " + CLOSING)
 
 
 def test_the_grip_after_the_crate_is_pushed_aside_closes_freely():
     with lowered_folder(RAILS, "p04", ops(*CRATE_FIRST)) as problem:
-        kf = solve(problem, "keyframes")
-        assert kf.solved, kf.worst_constraint
-        path = solve(problem, "path", warm=kf)
+        path = path_from_keyframes(problem)
         assert path.solved, path.worst_constraint
         assert verify.verify(problem, path, fingers=path.fingers) == []

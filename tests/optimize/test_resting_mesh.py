@@ -10,9 +10,8 @@ from __future__ import annotations
 from pathlib import Path
 
 from tampcli.optimize import verify
-from tampcli.optimize.solve import solve
 
-from .helpers import lowered_folder, ops
+from .helpers import lowered_folder, ops, path_from_keyframes
 
 SCANNER = Path(__file__).resolve().parents[2] / "problems" / "blind30" / "p06"
 PLAN = ("(pick part intake)", "(scan part scanner)", "(place part bin)", "(report part bin)")
@@ -20,9 +19,7 @@ PLAN = ("(pick part intake)", "(scan part scanner)", "(place part bin)", "(repor
 
 def test_a_mesh_lifted_off_its_support_is_not_a_collision():
     with lowered_folder(SCANNER, "p06", ops(*PLAN)) as problem:
-        kf = solve(problem, "keyframes")
-        assert kf.solved, kf.worst_constraint
-        path = solve(problem, "path", warm=kf)
+        path = path_from_keyframes(problem)
         assert path.solved, path.worst_constraint
         assert verify.verify(problem, path, fingers=path.fingers) == []
 

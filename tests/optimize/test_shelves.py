@@ -13,7 +13,7 @@ import pytest
 from tampcli.optimize import final_starts
 from tampcli.optimize.solve import solve
 
-from .helpers import lowered_folder, ops
+from .helpers import lowered_folder, ops, path_from_keyframes
 
 POCKET = Path(__file__).resolve().parents[2] / "problems" / "blind27" / "p05"
 # blind27 p05: a slab (8 x 14 cm) and two boxes (6 x 7 cm) fill a 14.6 cm square pocket
@@ -80,7 +80,5 @@ def test_the_disk_puts_each_piece_down_from_the_open_side(skeleton):
     place, so the guess kept the face its grasp chose (east, for a box taken after the
     slab was in), the disk inside the slab: 'collision planar_body vs slab by 4.1 cm'."""
     with lowered_folder(POCKET, "p05", ops(*skeleton)) as problem:
-        kf = solve(problem, "keyframes")
-        assert kf.solved, kf.worst_constraint
-        path = solve(problem, "path", warm=kf)
+        path = path_from_keyframes(problem)
         assert path.solved, path.worst_constraint

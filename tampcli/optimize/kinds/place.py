@@ -122,7 +122,7 @@ class Place(ModeKind):
             pick = problem.checker.min_distance(
                 q_pick, others, None, frozenset({step.obj}), static=False,
                 horizon=horizon)
-            if walk.inside:
+            if walk.graded:
                 # The keyframe stage's last try: how deep within the margin, to the
                 # millimetre. Near walls every face may be within it, and the one 4 mm
                 # in beats one 4 cm into a neighbour (blind27 p05: a box into a walled
