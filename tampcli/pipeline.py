@@ -224,7 +224,8 @@ def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOpt
         # (blind7 p03: 60 s searched, the useless drop and fetch kept for want of time).
         reserve = ELIMINATION_SHARE * options.bnb.time_limit \
             if math.isfinite(options.bnb.time_limit) else 0.0
-        searching = dataclasses.replace(options.bnb, reserve=reserve)
+        searching = dataclasses.replace(options.bnb, reserve=reserve,
+                                        jobs=options.bnb.processes())
         evaluate = StageEvaluator(inputs, geometry, options, deadline)
     modes = inputs.modes
     movable = frozenset(geometry.world.movable_names)
@@ -263,14 +264,14 @@ def _solve_geometric(inputs: ParsedInputs, geometry: Geometry, options: SolveOpt
                   on_event=heard, learn=learn, relax=evaluate.relaxed,
                   diagnose=evaluate.violated)
     skeletons = TimedSource(source, timers)
-    if options.bnb.jobs == 1:
+    if searching.jobs == 1:
         result = branch_and_bound(skeletons, evaluate, searching, **search)
     else:
         from tampcli.bnb.parallel import parallel_branch_and_bound
         from tampcli.skeleton_pool import SkeletonPool
 
         # This process solves skeletons too: jobs - 1 workers (bnb/parallel.py).
-        with SkeletonPool(_worker_parts, (inputs.paths, options), options.bnb.jobs - 1,
+        with SkeletonPool(_worker_parts, (inputs.paths, options), searching.jobs - 1,
                           deadline) as pool:
             result = parallel_branch_and_bound(skeletons, pool, evaluate, searching, **search)
     result.stats.update({f"learning_{k}": v for k, v in source.stats.items()})

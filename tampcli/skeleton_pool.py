@@ -55,6 +55,13 @@ class SkeletonPool:
     def __exit__(self, *exc) -> None:
         self.close()
 
+    def start(self) -> None:
+        """Spawn the workers now, each setting itself up while this process solves
+        (an empty task each: the pool spawns a worker per task it cannot give to an
+        idle one)."""
+        for _ in range(self._jobs):
+            self._pool().submit(_ready)
+
     def submit(self, job: SkeletonJob) -> Future:
         """The skeleton's SkeletonRun, to come; a dead worker's skeletons fail (their
         futures raise) and the next ones go to fresh workers."""
@@ -109,6 +116,10 @@ class _Worker:
         if found is not None:
             _store(self.best, self.each, job.rank, *found)
         return run
+
+
+def _ready() -> None:
+    """The task `SkeletonPool.start` sends: nothing, once the worker is set up."""
 
 
 def _store(best, each, rank: int, objective: float, per_action: float | None) -> None:

@@ -45,29 +45,34 @@ def test_two_jobs_draw_no_regrasp_the_serial_search_would_not(cli, tmp_path):
     assert two["objective"] == pytest.approx(one["objective"], abs=1e-6)
 
 
-@pytest.mark.parametrize("bad", ["0", "-1"])
+@pytest.mark.parametrize("bad", ["-1", "-3"])
 def test_a_bad_job_count_is_a_usage_error(cli, tmp_path, bad):
     run, out = _solve(cli, tmp_path, "planar-tamp", "p01", "--jobs", bad)
     assert run.code == 2
-    assert f"--jobs: must be an integer >= 1, got {bad}" in run.err
+    assert f"--jobs: must be an integer >= 0, got {bad}" in run.err
     assert not out.exists()
 
 
 def test_a_worker_killed_mid_solve_is_reported_and_the_search_goes_on(cli, tmp_path):
-    """arm-sort's skeletons take seconds each: its workers are killed while they
-    solve the first two; those fail with the reason, fresh workers take the rest."""
+    """arm-sort's skeletons take seconds each. Its first answer (#1) is found in this
+    process, alone; then #2 is solved here and #3 by the worker. Workers are killed
+    every 0.3 s (a fresh one takes about a second to set up): #3 fails with the
+    reason, and the search goes on."""
+    stop = threading.Event()
 
     def kill_workers():
-        for child in multiprocessing.active_children():
-            child.kill()
+        while not stop.wait(0.3):
+            for child in multiprocessing.active_children():
+                child.kill()
 
-    timer = threading.Timer(2.5, kill_workers)
-    timer.start()
+    killer = threading.Thread(target=kill_workers, daemon=True)
+    killer.start()
     try:
         run, out = _solve(cli, tmp_path, "arm-sort", "p01", "--jobs", "2", "-k", "3",
                           "--time-limit", "60")
     finally:
-        timer.cancel()
+        stop.set()
+        killer.join()
     assert run.code in (0, 1), run.err
     assert "Traceback" not in run.err + run.out
     sol = json.loads(out.read_text())

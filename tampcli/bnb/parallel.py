@@ -8,18 +8,23 @@ problems of its prefixes). With `jobs` N, N skeletons are solved at once: one
 here, between the books' turns, and N - 1 by the workers (worker processes).
 The main process takes the lowest rank not started (a problem of one skeleton
 is solved as the serial search solves it, no worker started), the workers the
-next ones. At most `2 * jobs` skeletons are out at once before a first solution,
-`WINDOW * jobs` after one, so that a worker done early goes on with the next
-skeletons while an older, slower one holds up the books (results are taken in
-rank order).
+next ones. Before a first solution the search is the serial one: one skeleton
+out at a time, solved here, each drawn knowing every result before it (the
+failures' lessons decide which skeleton comes next, and one drawn without them
+is mostly wasted: blind27 p04's first answer came at 33 s with two out at once,
+16 s serially; blind18 p04's at 50 s against 30 s). After one, `WINDOW * jobs`
+are out at once, so that a worker done early goes on with the next skeletons
+while an older, slower one holds up the books (results are taken in rank
+order). The workers are started with the search (`Workers.start`), so that
+they are set up by the time the first solution opens the window.
 
 Deterministic like the serial search: results are taken in rank order, one
 at a time, and the next skeleton is drawn right after each; so what the
 books hold when a skeleton is drawn (incumbent, learned obstructions,
 infeasible prefixes, keyframe warm starts) depends on ranks, not on which
-worker finished first. What differs from `--jobs 1`: a skeleton is drawn
-while up to `2 * jobs - 1` (`WINDOW * jobs - 1`) before it are still out, so it knows nothing of
-their results (no warm start from them, their learning not applied yet; learning
+worker finished first. What differs from `--jobs 1`, once there is a first
+solution: a skeleton is drawn while up to `WINDOW * jobs - 1` before it are
+still out, so it knows nothing of their results (no warm start from them, their learning not applied yet; learning
 is applied in rank order as results come back). Its keyframe bound is
 judged against the incumbent when it is taken, as the serial search would;
 a path solved meanwhile is then thrown away.
@@ -47,8 +52,9 @@ from tampcli.bnb.skeleton_run import SkeletonJob, SkeletonRun, answer, run_skele
 from tampcli.bnb.values import BnBOptions, BnBResult, Diagnose, Evaluate, Event, SkeletonSource
 from tampcli.solution import SkeletonRecord
 
-# Skeletons out at once per job once there is an incumbent (2 before one: a skeleton
-# drawn then may fail, and teach those after it, or, with --first, be one too many).
+# Skeletons out at once per job once there is an incumbent (one in all before one: a
+# skeleton drawn then may fail, and teach those after it, or, with --first, be one too
+# many).
 # arm-sort's slow skeletons are #8, #13 and #17 (2.5-4 s each, the others 0.1 s, pruned
 # at their reach against the incumbent): with 2 per job, #13 could not start before #8
 # was taken, and the three ran one after another (--jobs 2: 14.5 s, serial 16.4 s);
@@ -68,6 +74,10 @@ class Workers(Protocol):
     cutoff, or a prefix's reach (prefix_reach.py). Only lower ranks count, so
     what a skeleton is judged against is what the books will hold when it is
     taken, whichever worker finished first."""
+
+    def start(self) -> None:
+        """Set the workers up now (a World each), while this process looks for the
+        first solution alone."""
 
     def submit(self, job: SkeletonJob) -> Future: ...
 
@@ -96,6 +106,8 @@ def parallel_branch_and_bound(
                              time.perf_counter, learn, relax, diagnose)
     search.workers = workers
     search.stats["jobs"] = options.jobs
+    if not options.first:
+        workers.start()
     return search.run()
 
 
@@ -118,7 +130,7 @@ class _ParallelSearch(_Search):
             if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
                 stop = "time"
                 break
-            window = (2 if self.incumbent is None else WINDOW) * self.options.jobs
+            window = 1 if self.incumbent is None else WINDOW * self.options.jobs
             if stop is None and len(out) < window and not self._waits(out):
                 stop = self._draw_next(iterator, out)
                 continue

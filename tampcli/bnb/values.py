@@ -4,6 +4,7 @@ protocol, events for live displays, the result."""
 from __future__ import annotations
 
 import math
+import os
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, Protocol
@@ -34,8 +35,10 @@ class BnBOptions:
         prefix and forbid every skeleton that starts with it.
     first: stop at the first feasible skeleton (its solution verified), without
         looking for a better one.
-    jobs: skeletons whose NLPs are solved at once, each in a worker process with a
-        World of its own (bnb/parallel.py); 1 solves them here, one after another.
+    jobs: skeletons whose NLPs are solved at once once there is a first solution, each
+        in a worker process with a World of its own (bnb/parallel.py); 1 solves them
+        here, one after another; 0 (the default): one per core this process may use
+        (`processes`). Before a first solution the search is serial whatever `jobs`.
     reserve: seconds of `time_limit` left to a pass after the search (action
         elimination): with an answer, the search stops at `time_limit - reserve`.
     """
@@ -46,8 +49,16 @@ class BnBOptions:
     anytime: bool = False
     prefix_pruning: bool = True
     first: bool = False
-    jobs: int = 1
+    jobs: int = 0
     reserve: float = 0.0
+
+    def processes(self) -> int:
+        """`jobs`, 0 read as the cores this process may run on."""
+        if self.jobs:
+            return self.jobs
+        if hasattr(os, "sched_getaffinity"):
+            return max(len(os.sched_getaffinity(0)), 1)
+        return os.cpu_count() or 1
 
     def skeleton_limit(self, answered: bool) -> float:
         """How many skeletons the search draws at most, with or without an answer."""
@@ -62,7 +73,7 @@ class BnBOptions:
     def __post_init__(self):
         if self.max_skeletons is not None:
             require_int(self.max_skeletons, "max_skeletons", 1)
-        require_int(self.jobs, "jobs", 1)
+        require_int(self.jobs, "jobs", 0)
         require_number(self.time_limit, "time_limit", positive=True, unit="s", finite=False)
         require_number(self.symbolic_weight, "symbolic_weight")
         require_number(self.reserve, "reserve")

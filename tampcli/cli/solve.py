@@ -60,12 +60,11 @@ FLAGS = (
          "'tampcli[ipopt]'), or auto (SLSQP, the faster at every size measured; "
          "docs/ipopt.md)", choices=tuple(BACKENDS)),
     Flag("--jobs", "bnb", "jobs", int, "N",
-         "skeletons solved at once: one in this process, the others in N - 1 worker "
-         "processes; 1: serial (the default: bench/results/parallel.md measured 1.55x "
-         "on arm-sort's complete search with 2 on an idle machine, 1.03x on arm-kitchen, "
-         "for more CPU; skeletons drawn while others are out do not hear of their "
-         "failures' lessons, which the serial search orders by)",
-         short="-j"),
+         "skeletons solved at once once there is a first solution: one in this process, "
+         "the others in N - 1 worker processes, set up while this process looks for the "
+         "first solution alone, as the serial search does (each skeleton drawn knowing "
+         "every failure before it); 1: serial throughout",
+         short="-j", default_help="0: one per core"),
 )
 
 

@@ -45,6 +45,9 @@ class _Threads:
         self.evaluate, self.delays = evaluate, delays
         self.answers = {}  # rank -> (objective, cost per action) (Workers.found)
 
+    def start(self):
+        pass
+
     def submit(self, job):
         def run():
             time.sleep((self.delays or {}).get(job.names, 0.0))
@@ -89,12 +92,13 @@ def test_same_answer_as_the_serial_search(workers):
     assert [op.name for op in parallel.best_plan] == [op.name for op in serial.best_plan] \
         == ["i", "j", "k"]
     assert parallel.best_objective == pytest.approx(serial.best_objective, abs=1e-12)
-    # 2 * workers out at once: from 3 workers, #5 ("a", "g", "h") is drawn before
-    # ("a",) is known infeasible, and its own failure is one heuristic prune more.
-    assert parallel.stats["stop"].split(" (")[0] == serial.stats["stop"].split(" (")[0]
-    # #1's infeasible prefix is forbidden; a skeleton drawn before that was known fails.
+    assert parallel.stats["stop"] == serial.stats["stop"]
+    # Before the first solution (#2) one skeleton is out at a time, as serially: #1's
+    # infeasible prefix is forbidden before #5 ("a", "g", "h") is drawn, however many
+    # workers (with 2 per job out from the start, 3 workers drew it, and it failed).
     assert all(r.outcome == "infeasible" for r in parallel.skeletons if r.plan[0] == "a")
-    assert (("a", "g", "h") in [r.plan for r in parallel.skeletons]) == (workers >= 3)
+    assert ("a", "g", "h") not in [r.plan for r in parallel.skeletons]
+    assert _books(parallel)[:2] == _books(serial)[:2]
 
 
 def test_the_books_do_not_depend_on_which_worker_finishes_first():
@@ -134,7 +138,10 @@ def test_the_time_limit_cancels_what_is_out():
 
     def here(ops, stage, warm, cutoff=None):
         # This process's NLPs end by the deadline (the pipeline's evaluator); a worker's
-        # may not be waited for.
+        # may not be waited for. #1, alone out before a first solution, is quick (and
+        # costly: none after it is pruned by its answer).
+        if ops[0].name == "a":
+            return R("solved", 2.0)
         release.wait(0.1)
         return R("solved", 1.0)
 
@@ -147,9 +154,10 @@ def test_the_time_limit_cancels_what_is_out():
         release.set()
         threads.pool.shutdown(wait=False, cancel_futures=True)
     assert time.perf_counter() - started < 2.0
-    assert result.status == "limit" and result.stats["stop"] == "time limit"
-    assert [r.outcome for r in result.skeletons] == ["not reached"] * 4  # 2 * jobs out
-    assert all(r.reason == "cancelled: time" for r in result.skeletons)
+    assert result.status == "solved" and result.stats["stop"] == "time limit"
+    # After #1's answer every other skeleton is out at once (WINDOW per job).
+    assert [r.outcome for r in result.skeletons] == ["solved"] + ["not reached"] * 5
+    assert all(r.reason == "cancelled: time" for r in result.skeletons[1:])
     assert result.lower_bound is not None and result.lower_bound <= 0.2 + 1e-12
 
 
@@ -162,9 +170,10 @@ def test_first_stops_at_the_first_solution():
 def test_jobs_is_checked():
     from tampcli.errors import OptionError
 
-    for bad in (0, -1, 1.5, True):
+    for bad in (-1, 1.5, True):
         with pytest.raises(OptionError, match="jobs"):
             BnBOptions(jobs=bad)
+    assert BnBOptions(jobs=0).processes() >= 1 and BnBOptions(jobs=3).processes() == 3
 
 
 class _Deaf(_Threads):
@@ -175,8 +184,11 @@ class _Deaf(_Threads):
 
 
 def test_a_new_incumbent_spares_the_path_stage_of_a_skeleton_out_and_changes_no_book():
-    plans = [(("c", "d"), 2.0), (("x", "y"), 2.0)]
-    table = {(("c",), "keyframes"): R("solved", 1.0), (("c",), "path"): R("solved", 1.5),
+    # ("a", "b"), alone out before a first solution, answers 3.0; then the other two
+    # are out at once.
+    plans = [(("a", "b"), 2.0), (("c", "d"), 2.0), (("x", "y"), 2.0)]
+    table = {(("a",), "keyframes"): R("solved", 2.6), (("a",), "path"): R("solved", 2.8),
+             (("c",), "keyframes"): R("solved", 1.0), (("c",), "path"): R("solved", 1.5),
              (("x",), "keyframes"): R("solved", 2.0), (("x",), "path"): R("solved", 2.5)}
     books, paths = [], []
     for kind in (_Threads, _Deaf):
@@ -192,8 +204,8 @@ def test_a_new_incumbent_spares_the_path_stage_of_a_skeleton_out_and_changes_no_
         books.append(_books(result))
         paths.append([names for names, stage in calls if stage == "path"])
     assert books[0] == books[1]
-    assert books[0][1][2:4] == ("pruned", "keyframes")
-    assert paths == [[("c", "d")], [("c", "d"), ("x", "y")]]
+    assert books[0][2][2:4] == ("pruned", "keyframes")
+    assert paths == [[("a", "b"), ("c", "d")], [("a", "b"), ("c", "d"), ("x", "y")]]
 
 
 def test_a_skeleton_out_hears_of_a_lower_rank_answer_before_the_books_take_it():
@@ -227,8 +239,9 @@ def test_a_skeleton_out_hears_of_a_lower_rank_answer_before_the_books_take_it():
 
 def test_this_process_solves_the_first_skeleton_and_a_worker_the_next():
     """Two jobs: the lowest rank not started is solved here, so a problem of one
-    skeleton never waits for a worker; the next goes to the worker."""
-    plans = [(("a", "b"), 2.0), (("c", "d"), 2.0)]
+    skeleton never waits for a worker; before a first solution every skeleton is
+    solved here, one at a time; after it, the next but one goes to the worker."""
+    plans = [(("a", "b"), 2.0), (("c", "d"), 2.0), (("e", "f"), 2.0)]
     table = {(("a",), "path"): R("solved", 1.5), (("c",), "path"): R("solved", 0.2)}
     here = threading.get_ident()
     where = {}
@@ -242,7 +255,7 @@ def test_this_process_solves_the_first_skeleton_and_a_worker_the_next():
         parallel_branch_and_bound(Source(plans), threads, evaluate, BnBOptions(jobs=2))
     finally:
         threads.pool.shutdown(wait=False)
-    assert where == {"a": True, "c": False}
+    assert where == {"a": True, "c": True, "e": False}
 
 
 def test_after_a_first_solution_more_skeletons_are_out_at_once():

@@ -94,6 +94,9 @@ class _Threads:
         self.answers = {}  # rank -> (objective, cost per action)
         self.heard = threading.Event()
 
+    def start(self):
+        pass
+
     def submit(self, job):
         def run():
             if job.names != PLANS[0][0]:  # the others start once #1's answer is in
