@@ -70,7 +70,7 @@ def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
              ) -> Approach | None:
     """The vertical end of carry m at keyframe q_b, where the object rests on
     `contacts`, when something else is nearer to the object than the margin less the
-    tight margin there (9 mm), or it rests on a body that moves (`_stacked`); None
+    tight margin there (9 mm), or it rests on a body that moves (`stacked`); None
     otherwise.
     Its height: the neighbours' tops plus CLEAR over the object's bottom, within
     [margin + CLEAR / 2, MAX_HEIGHT]; where IK cannot reach a rung or one comes nearer
@@ -85,7 +85,7 @@ def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
     rest = tool @ held.grasp
     ignore = frozenset(m.sliding)
     near = close_to(problem, m, q_b, held, moved, checker, contacts)
-    if not near and not _stacked(problem, contacts):
+    if not near and not stacked(problem, contacts):
         return None
     # A rung beside a wall is as near it as the place is (p07's: 1 mm, the tight margin).
     clear = min([opts.tight_margin, *(c.distance for c in near)]) - SLACK
@@ -100,7 +100,7 @@ def vertical(problem, m, q_b, held: Held | None, moved: dict, checker, contacts
         height = max(height / 2, least)
 
 
-def _stacked(problem, contacts) -> bool:
+def stacked(problem, contacts) -> bool:
     """Whether the object rests on a body that moves (a stack): a carry that slid onto
     or off its top would drag it (blind15 p08: a cap carried sideways onto a can that
     stands on a post, its bottom level with the can's top for the last 5 cm; the physics
@@ -146,10 +146,12 @@ def _rungs(problem, q_b, tool, rest, height: float, held: Held, moved, ignore,
     return Approach(tuple(targets), tuple(qs))
 
 
-def rung_clear(problem, prev, q, held: Held, moved, ignore, clear: float) -> bool:
+def rung_clear(problem, prev, q, held: Held | None, moved, ignore, clear: float,
+               checker=None) -> bool:
     """Whether the rung q, and CHECKS points on the segment to it from `prev`, are
-    `clear` of everything (the robot and what it holds)."""
-    checker, horizon = problem.checker, problem.options.margin
+    `clear` of everything (the robot and what it holds), by `checker` (the problem's
+    when None)."""
+    checker, horizon = checker or problem.checker, problem.options.margin
     between = [(1 - s) * prev + s * q for s in np.arange(1, CHECKS + 1) / (CHECKS + 1)]
     return all(checker.min_distance(p, moved, held_spec(held), ignore, static=False,
                                     horizon=horizon) >= clear for p in [q, *between])
@@ -164,18 +166,23 @@ def _top(problem, key: str, moved) -> float | None:
     return z + info.half[2]
 
 
-def joined(out, climb: Approach | None, descent: Approach | None, q_a, q_b,
-           scale: float):
-    """The outcome `out` of the carry between the top rungs continued down the
-    descent's rungs to q_b and preceded by the climb's from q_a: the rungs become
-    waypoints, their segments join the cost (scale * sum |dq|^2, as the NLP's)."""
+def joined(out, climb: Approach | None, descent: Approach | None, q_a, q_b, segments: int,
+           waypoints: int):
+    """The outcome `out` of the motion between the outer rungs (over `segments`
+    segments) continued down the descent's rungs to q_b and preceded by the climb's
+    from q_a: the rungs become waypoints, and the cost is the whole path's as the path
+    NLP weighs a motion of that many segments, (N / waypoints) * sum |dq|^2 over its N
+    segments (path.phase_rows_fn), so that a motion with straight ends is not made
+    cheaper than the straight line by having more segments."""
     n = len(q_b)
     up = list(climb.qs) if climb is not None else []  # bottom rung first
     down = list(reversed(descent.qs)) if descent is not None else []  # top rung first
     x = np.vstack([*up, *np.asarray(out.x, dtype=float).reshape(-1, n), *down])
+    inner = out.cost * waypoints / segments  # its sum |dq|^2
     extra = 0.0
     for path in ([np.asarray(q_a, dtype=float), *up], [*down, np.asarray(q_b, dtype=float)]):
         if len(path) > 1:
             steps = np.diff(np.array(path), axis=0)
             extra += float(np.sum(steps * steps))
-    return dataclasses.replace(out, x=x.reshape(-1), cost=out.cost + scale * extra)
+    total = segments + len(up) + len(down)
+    return dataclasses.replace(out, x=x.reshape(-1), cost=total / waypoints * (inner + extra))

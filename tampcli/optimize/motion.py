@@ -28,6 +28,7 @@ from tampcli.optimize.path import (
     via_points,
 )
 from tampcli.optimize.planar_approach import straight
+from tampcli.optimize.retreat import arrival, departure
 
 LAZY_BAND = 0.01  # m: a point between waypoints this close to its limit gets its rows
 LAZY_ROUNDS = 3
@@ -48,10 +49,11 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     problem = run.problem
     m = problem.motions[ctx.index]
     climb = lift(problem, m, ctx.q_a, ctx.held, ctx.moved, run.checker) or straight(
-        problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.checker, m.leave_contact)
+        problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.checker, m.leave_contact) \
+        or departure(problem, m, ctx.q_a, ctx.moved, run.checker)
     descent = place_approach(problem, m, ctx.q_b, ctx.held, ctx.moved, run.checker) or \
         straight(problem, m, ctx.q_b, ctx.q_a, ctx.held, ctx.moved, run.checker,
-                 m.enter_contact)
+                 m.enter_contact) or arrival(problem, m, ctx.q_b, ctx.moved, run.checker)
     if climb is None and descent is None:
         return _solve_motion(run, ctx, T, checks, label, warm)
     first = climb.rungs if climb is not None else 0
@@ -66,7 +68,7 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     if out.status != "solved":
         return out
     segments = len(out.x) // problem.n + 1
-    return joined(out, climb, descent, ctx.q_a, ctx.q_b, segments / problem.options.waypoints)
+    return joined(out, climb, descent, ctx.q_a, ctx.q_b, segments, problem.options.waypoints)
 
 
 def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
