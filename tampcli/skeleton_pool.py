@@ -15,6 +15,7 @@ from __future__ import annotations
 import math
 import multiprocessing
 import os
+import threading
 import time
 from collections.abc import Callable
 from concurrent.futures import Future, ProcessPoolExecutor
@@ -25,6 +26,7 @@ import numpy as np
 from tampcli.bnb.skeleton_run import SkeletonJob, SkeletonRun, answer, run_skeleton
 
 RANKS = 1 << 14  # the ranks whose answers the workers hear of one by one
+ORPHAN_POLL = 1.0  # s: how often a worker looks whether its parent is still there
 
 # build(*args, deadline) -> (evaluate, operators by name, is_geometric); `deadline`
 # is a perf_counter time of the worker's own.
@@ -148,7 +150,16 @@ def _start(build: Build, args: tuple, deadline: float, best, each) -> None:
     null = os.open(os.devnull, os.O_WRONLY)
     os.dup2(null, 1)
     os.dup2(null, 2)
+    threading.Thread(target=_end_with, args=(os.getppid(),), daemon=True).start()
     _worker.append(_Worker(build, args, deadline, best, each))
+
+
+def _end_with(parent: int) -> None:
+    """End this worker once its parent is gone (killed without the chance to end its
+    pool: a worker blocked on the pool's queue would wait for ever)."""
+    while os.getppid() == parent:
+        time.sleep(ORPHAN_POLL)
+    os._exit(0)
 
 
 def _run(job: SkeletonJob) -> SkeletonRun:

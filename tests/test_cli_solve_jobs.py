@@ -81,3 +81,47 @@ def test_a_worker_killed_mid_solve_is_reported_and_the_search_goes_on(cli, tmp_p
     assert all("BrokenProcessPool" in s["reason"] for s in killed)
     assert "worker failed" in run.err  # the skeleton table says why
     assert len(sol["skeletons"]) == 3
+
+
+def test_the_workers_end_when_the_solve_is_killed(tmp_path):
+    """A solve killed outright (SIGKILL: no chance to end its pool) leaves no worker
+    behind: each ends once its parent is gone (skeleton_pool._end_with)."""
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+
+    solve = subprocess.Popen(
+        [sys.executable, "-m", "tampcli", "solve", "--quiet", "--jobs", "2",
+         str(DOMAINS / "arm-sort" / "domain.pddl"), str(PROBLEMS / "arm-sort" / "p01.pddl")],
+        cwd=ROOT, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+    def children() -> list[int]:
+        out = subprocess.run(["ps", "-o", "pid=", "--ppid", str(solve.pid)],
+                             capture_output=True, text=True).stdout
+        return [int(p) for p in out.split()]
+
+    try:
+        until = time.monotonic() + 30
+        while not children() and time.monotonic() < until:
+            time.sleep(0.1)
+        workers = children()
+        assert workers, "no worker started"
+        time.sleep(1.0)  # set up (or setting up)
+    finally:
+        solve.send_signal(signal.SIGKILL)
+        solve.wait()
+
+    def alive(pid: int) -> bool:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            return False
+        with open(f"/proc/{pid}/stat") as f:  # a zombie is gone but for its entry
+            return f.read().split(")")[-1].split()[0] != "Z"
+
+    until = time.monotonic() + 10
+    while any(alive(p) for p in workers) and time.monotonic() < until:
+        time.sleep(0.2)
+    assert not any(alive(p) for p in workers)

@@ -180,6 +180,9 @@ class _Search(StageSteps):
                 stop = "first"
                 break
             plan = next(iterator, None)
+            if self._out_of_time():
+                stop = "time"
+                break
             if plan is None:
                 stop = "exhausted"
                 break
@@ -192,6 +195,13 @@ class _Search(StageSteps):
             self._run_stages(trial)
             self._record(trial)
         return self._result(stop)
+
+    def _out_of_time(self) -> bool:
+        """Whether the search's time is up. Asked again after drawing a skeleton too:
+        a source that learned orders no plan meets may take tens of seconds to say so
+        (blind31 p01: 24 s), and a skeleton drawn past the limit is not evaluated (it
+        was, and the run ended 2.4 s after its limit)."""
+        return self.elapsed() >= self.options.search_limit(self.incumbent is not None)
 
     def _draw(self, plan) -> _Trial:
         self.rank += 1

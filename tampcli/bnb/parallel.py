@@ -166,6 +166,8 @@ class _ParallelSearch(_Search):
         if self.options.first and self.incumbent is not None:
             return "first"
         plan = next(iterator, None)
+        if self._out_of_time():
+            return "time"
         if plan is None:
             return "exhausted"
         trial = self._draw(plan)

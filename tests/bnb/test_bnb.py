@@ -276,16 +276,17 @@ def test_the_reserve_is_kept_only_once_there_is_an_answer():
     time); without one it goes on to the limit."""
     src = [((f"a{i}",), i) for i in range(20)]
     unsolved = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(20)})
-    ticks = iter(range(1000))
+    # each look at the clock a tenth of a second later
+    ticks = iter(range(10000))
     res = branch_and_bound(Source(src), unsolved, BnBOptions(time_limit=10, reserve=4,
                                                               anytime=True, max_skeletons=100),
-                           clock=lambda: next(ticks))
+                           clock=lambda: next(ticks) / 10)
     seen_without = len(res.skeletons)
     solved = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(1, 20)})
-    ticks = iter(range(1000))
+    ticks = iter(range(10000))
     res = branch_and_bound(Source(src), solved, BnBOptions(time_limit=10, reserve=4,
                                                             anytime=True, max_skeletons=100),
-                           clock=lambda: next(ticks))
+                           clock=lambda: next(ticks) / 10)
     assert res.status == "solved" and res.stats["stop"] == "time limit"
     assert len(res.skeletons) < seen_without
     assert BnBOptions(time_limit=10, reserve=4).search_limit(True) == 6
@@ -350,3 +351,27 @@ def test_optimality_waits_for_the_sources_bound_when_skeletons_come_out_of_order
     result = branch_and_bound(source, table_evaluator(table), BnBOptions(symbolic_weight=1.0))
     assert [op.name for op in result.best_plan] == ["cheap"]
     assert source.drawn[-1] == ("cheap",) and source.solved_names == ("cheap",)
+
+
+def test_a_skeleton_drawn_past_the_time_limit_is_not_evaluated():
+    """blind31 p01: the source took 24 s to draw the last skeleton, past the limit;
+    it was evaluated all the same and the run ended 2.4 s late. Now the search looks
+    at the clock again after each draw."""
+    now = [0.0]
+
+    class SlowSource(Source):
+        def __iter__(self):
+            for plan in super().__iter__():
+                now[0] += 4.0  # each draw takes 4 s
+                yield plan
+
+    calls = []
+    src = SlowSource([((f"a{i}",), i) for i in range(5)])
+    evaluate = table_evaluator({((f"a{i}",), "final"): R("infeasible") for i in range(5)},
+                               calls)
+    res = branch_and_bound(src, evaluate, BnBOptions(time_limit=10), clock=lambda: now[0])
+    assert res.stats["stop"] == "time limit"
+    # drawn at 4 s and 8 s, evaluated; the third, drawn at 12 s, is not
+    assert len(src.drawn) == 3
+    assert {names for names, _ in calls} == {("a0",), ("a1",)}
+    assert [r.plan for r in res.skeletons] == [("a0",), ("a1",)]
