@@ -215,6 +215,13 @@ BLIND30 = {"p01": ("a movable mesh cube to a raised region, a fixed mesh rock (P
            "p04": ("a sphere and a cylinder round a wall, a move to park (planar)", 5),
            "p05": ("URDF furniture, supports at three heights, a turned region (Panda)", 4),
            "p06": ("a mesh with non-uniform scale past a fixed .stl scanner (xArm6)", 4)}
+# problems/blind31, written blind against 7e135f2 (scale and clutter).
+BLIND31 = {"p01": ("six items sorted into three rimmed trays among distractors (Panda)", 12),
+           "p02": ("a mat cleared of three things for a wide case (KUKA)", 8),
+           "p03": ("a crate unpacked: parts under a pad and a cap (xArm6)", 8),
+           "p04": ("three of nine pucks to goals through clutter (planar)", 6),
+           "p05": ("a place set from a cluttered counter (Panda)", 8),
+           "p06": ("two towers of three from a mixed pile (KUKA, base turned)", 10)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -240,7 +247,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind23", BLIND23), ("blind24", BLIND24),
             ("blind25", BLIND25), ("blind26", BLIND26),
             ("blind27", BLIND27), ("blind28", BLIND28), ("blind29", BLIND29),
-            ("blind30", BLIND30),
+            ("blind30", BLIND30), ("blind31", BLIND31),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

@@ -49,6 +49,13 @@ __all__ = ["MOVED", "PROVED", "Blocker", "LearningSource", "compile_task"]
 # padded copies of them (tens of thousands a minute on a pen with three blockers,
 # measured), and branch and bound should not wait for the enumeration to get past them.
 MAX_DEFERRED_IN_A_ROW = 100
+# Plans of the compiled task in a row that pass a state of the task twice before the
+# learned enumeration is given up (the plain task's skeletons follow, as when it has
+# none left; the next lesson starts it again). A lesson no loopless plan meets (blind31
+# p01: "tin moved before (pick g1 counter)", the tin fits no grasp and no other place)
+# leaves the compiled task only plans that move it and put it back: 1.3 million of
+# them in 83 s, to the time limit, and no skeleton drawn. About a second of them here.
+MAX_LOOPING_IN_A_ROW = 20_000
 
 
 class LearningSource:
@@ -97,7 +104,7 @@ class LearningSource:
         self._solved: list[tuple[str, ...]] = []
         self._forbidden: list[tuple[str, ...]] = []
         self.stats = dict(learned=0, superseded=0, redundant=0, from_learned=0, proved=0,
-                          suspects=0)
+                          suspects=0, given_up=0)
 
     # ------------------------------------------------------------ what bnb tells it
 
@@ -360,6 +367,7 @@ class LearningSource:
         return self._fits[names]
 
     def _next_learned(self):
+        looping = 0
         while self._learned is not None:
             try:
                 plan = next(self._learned)
@@ -367,7 +375,14 @@ class LearningSource:
                 self._learned = None
                 return None
             plan = self._plain_version(plan)
-            if plan.names not in self._considered and not (self.loopless and self._loops(plan)):
+            if self.loopless and self._loops(plan):
+                looping += 1
+                if looping >= MAX_LOOPING_IN_A_ROW:
+                    self._learned = None
+                    self.stats["given_up"] += 1
+                    return None
+                continue
+            if plan.names not in self._considered:
                 self.stats["from_learned"] += 1
                 return plan
         return None

@@ -258,3 +258,44 @@ def test_a_suspect_operator_comes_last_but_is_not_lost():
     assert drawn.index(b2_first) < drawn.index(b1_first)
     assert not any(suspect in names for names in drawn[:2])
     assert src.stats["suspects"] == 1
+
+
+FITS_DOMAIN = """
+(define (domain fits)
+  (:requirements :strips :typing)
+  (:types block region)
+  (:predicates (in ?b - block ?r - region) (holding ?b - block) (handempty)
+               (fits ?b - block ?r - region))
+  (:action pick :parameters (?b - block ?r - region)
+    :precondition (and (in ?b ?r) (handempty))
+    :effect (and (holding ?b) (not (in ?b ?r)) (not (handempty))))
+  (:action place :parameters (?b - block ?r - region)
+    :precondition (and (holding ?b) (fits ?b ?r))
+    :effect (and (in ?b ?r) (handempty) (not (holding ?b)))))
+"""
+
+FITS_PROBLEM = """
+(define (problem tin) (:domain fits)
+  (:objects a tin - block floor goal counter - region)
+  (:init (handempty) (in a floor) (in tin counter)
+         (fits a floor) (fits a goal) (fits tin counter))
+  (:goal (in a goal)))
+"""
+
+
+def test_a_lesson_only_loops_meet_is_given_up_and_the_plain_skeletons_follow(monkeypatch):
+    """blind31 p01: "tin moved before (pick a floor)", where the tin fits nowhere but
+    where it stands: the compiled task's plans all take it and put it back (1.3 million
+    of them in 83 s there). Past MAX_LOOPING_IN_A_ROW of them the learned enumeration
+    is given up; the plain task's skeletons follow, none lost."""
+    import tampcli.search.learned as learned
+
+    monkeypatch.setattr(learned, "MAX_LOOPING_IN_A_ROW", 1)
+    task = ground(parser.parse_domain(FITS_DOMAIN), parser.parse_problem(FITS_PROBLEM))
+    plain = [p.names for p in TopK(task, loopless=True)]
+    src = source(task)
+    first = next(src)
+    src.learn(Blocker("tin", "(pick a floor)"))
+    rest = [p.names for p in src]
+    assert src.stats["given_up"] >= 1
+    assert [first.names, *rest] == plain  # in the plain task's order, none lost
