@@ -36,10 +36,13 @@ from tampcli.render.physics_values import (
     PhaseDrift,
     PhysicsReplay,
     PhysicsSettings,
+    Touch,
     object_mass,
 )
 from tampcli.render.replay import Replay, phase_label
 from tampcli.solution_fit import finger_rows
+
+TOUCH_EVERY = 8  # simulation steps between looks at what the robot touches (30 Hz)
 
 
 def replay_physics(inputs, mode_kind=None, speed: float | None = None,
@@ -91,6 +94,7 @@ class _Run:
         # [name, phase, depth, contact or None until the grasp that ends an approach]
         self.overlaps: list[list] = []
         self.contact: dict[str, float] = {}  # depth at the last release, during the retreat
+        self.touches: dict[tuple[str, int], tuple[str, float]] = {}  # first per phase
 
     def _step(self, q, track: bool = True, fingers=None) -> None:
         """One step towards q; `fingers`: the solution's finger values there (the
@@ -209,6 +213,8 @@ class _Run:
                 self._step(state.q, fingers=state.fingers)
                 if j in exempt and s % 4 == 0:
                     self._note_overlap(exempt[j], item.phase)
+                if s % TOUCH_EVERY == 0:
+                    self._note_touches(exempt.get(j), item.phase)
             if j in exempt and exempt.get(j + 1) != exempt[j] and exempt[j] != self.sim.held:
                 self.sim.heed_robot(exempt[j])
                 self.contact.pop(exempt[j], None)
@@ -232,6 +238,18 @@ class _Run:
             last[2] = max(last[2], depth)
         else:
             self.overlaps.append([name, k, depth, self.contact.get(name)])
+
+    def _note_touches(self, allowed: str | None, k: int) -> None:
+        """The first touch in phase k of each object the plan keeps clear of the robot
+        (all but the one held and the one it may pass into here)."""
+        if not 0 <= k < len(self.solution.phases):
+            return
+        for name in self.phase_drifts:
+            if name in (self.sim.held, allowed) or (name, k) in self.touches:
+                continue
+            links = self.sim.touching(name)
+            if links:
+                self.touches[(name, k)] = (links[0], self.steps / self.settings.hz)
 
     def _taking(self, name: str) -> None:
         """The approach to `name` is over: its passes are measured against this contact."""
@@ -263,8 +281,11 @@ class _Run:
                 tuple(transforms.xyzquat_from_pose(simulated)),
                 tuple(self.phase_drifts.get(name, ()))))
         hz = self.settings.hz
+        touches = tuple(Touch(name, link, k, self._label(k), seconds)
+                        for (name, k), (link, seconds) in self.touches.items())
         return PhysicsReplay(self.steps / hz, self.steps, hz, tuple(objects), self.tracking,
-                             tuple(self.grips), self._overlaps())
+                             tuple(self.grips), self._overlaps(),
+                             tuple(sorted(touches, key=lambda t: t.seconds)))
 
     def _overlaps(self) -> tuple[Overlap, ...]:
         return tuple(Overlap(name, k, self._label(k), depth, contact or 0.0)

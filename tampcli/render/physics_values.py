@@ -105,6 +105,19 @@ class Overlap:
 
 
 @dataclass(frozen=True)
+class Touch:
+    """A robot link touching an object where the plan has it clear (not held, not the
+    object taken or let go of in the move next to it): the first such touch of each
+    object in a phase."""
+
+    name: str
+    link: str
+    phase: int
+    label: str
+    seconds: float  # simulated, from the replay's start
+
+
+@dataclass(frozen=True)
 class PhysicsReplay:
     """The outcome of one physics replay."""
 
@@ -115,6 +128,7 @@ class PhysicsReplay:
     tracking_error: float  # largest joint error seen while moving (rad, or m for planar)
     grips: tuple[Grip, ...] = ()  # each finger grasp, in order
     overlaps: tuple[Overlap, ...] = ()  # deeper than OVERLAP_NOTED, in order
+    touches: tuple[Touch, ...] = ()  # in order
 
     @property
     def max_distance(self) -> float:
@@ -134,7 +148,9 @@ class PhysicsReplay:
                 "grips": [{"object": g.name, "opening": g.opening} for g in self.grips],
                 "overlaps": [{"object": o.name, "phase": o.phase, "label": o.label,
                               "depth": o.depth, "contact": o.contact}
-                             for o in self.overlaps]}
+                             for o in self.overlaps],
+                "touches": [{"object": t.name, "link": t.link, "phase": t.phase,
+                             "label": t.label, "seconds": t.seconds} for t in self.touches]}
 
 
 @dataclass(frozen=True)
@@ -145,24 +161,34 @@ class DriftViolation:
     first: PhaseDrift | None  # the phase it first exceeded it at; None: in the final settle
     max_distance: float
     max_angle_deg: float
+    touch: Touch | None = None  # the robot's last touch of it up to that phase
 
     def describe(self) -> str:
         d = self.drift
         where = (f"first beyond at the end of phase {self.first.phase}: {self.first.label}"
                  if self.first is not None else "first beyond after the last phase, while "
                  "everything settled")
+        struck = "" if self.touch is None else (
+            f"; touched by {self.touch.link} in phase {self.touch.phase}: {self.touch.label} "
+            f"({self.touch.seconds:.2f} s into the replay), where the plan keeps it clear")
         return (f"physics: {d.name} ends {d.distance:.3f} m and {d.angle_deg:.1f} deg from "
                 f"its planned pose (tolerance {self.max_distance:g} m, "
-                f"{self.max_angle_deg:g} deg); {where}")
+                f"{self.max_angle_deg:g} deg); {where}{struck}")
 
 
 def drift_violations(replay: PhysicsReplay, max_distance: float,
                      max_angle_deg: float) -> tuple[DriftViolation, ...]:
     """The objects whose final pose is beyond either tolerance, in scene order."""
-    return tuple(DriftViolation(o, o.first_beyond(max_distance, max_angle_deg), max_distance,
-                                max_angle_deg)
-                 for o in replay.objects
-                 if o.distance > max_distance or o.angle_deg > max_angle_deg)
+    out = []
+    for o in replay.objects:
+        if o.distance <= max_distance and o.angle_deg <= max_angle_deg:
+            continue
+        first = o.first_beyond(max_distance, max_angle_deg)
+        touches = [t for t in replay.touches if t.name == o.name
+                   and (first is None or t.phase <= first.phase)]
+        out.append(DriftViolation(o, first, max_distance, max_angle_deg,
+                                  touches[-1] if touches else None))
+    return tuple(out)
 
 
 def overlap_violations(replay: PhysicsReplay, max_distance: float) -> tuple[Overlap, ...]:

@@ -201,3 +201,48 @@ def test_a_turn_about_its_own_axis_is_no_drift_for_a_cylinder_or_a_sphere():
     assert _drift(planned, turned, "axis")[1] == pytest.approx(0.0, abs=1e-6)
     assert _drift(planned, tipped, "axis")[1] == pytest.approx(np.degrees(0.9))
     assert _drift(planned, tipped, "full")[1] == 0.0
+
+
+def test_an_object_knocked_by_a_link_names_the_link_and_the_phase(cli, tmp_path):
+    """A free motion whose fourth waypoint puts the left finger through cube a, which
+    stands clear of the plan: the verdict names what struck it and when (blind31
+    DOC_GAPS 1: the hand leaving a tower sideways swept a cube off it, and the verdict
+    named only the phase)."""
+    import dataclasses
+
+    from tower_solution import TOWER as FOLDER
+
+    from tampcli.geometry.scene import load_scene
+    from tampcli.geometry.world import World
+
+    solution = tower_solution()
+    scene = load_scene(FOLDER / "tower4.scene.toml", geometric=False)
+    with World(scene) as world:
+        a = next(b for b in scene.bodies if b.name == "a").matrix[:3, 3]
+        target = world.tool_pose(world.start)
+        target[:3, 3] = a + [0.0, 0.04, 0.0]  # a finger where a stands
+        q, residual = world.ik(target, world.start)
+        assert residual < 1e-6
+    trajectory = list(solution.trajectory)
+    assert solution.phases[0].attached is None and solution.phases[0].end > 3
+    trajectory[3] = tuple(float(v) for v in q)
+    path = tmp_path / "knock.json"
+    solution_file.write(dataclasses.replace(solution, trajectory=tuple(trajectory)), path)
+    run = cli("validate", "--json", "--physics", DOMAIN, TOWER_PROBLEM, path)
+    data = json.loads(run.out)
+    assert run.code == 1
+    knocked = [v for v in data["violations"] if v["kind"] == "physics"]
+    assert [v["object"] for v in knocked] == ["a"]
+    assert "touched by panda_leftfinger in phase 0: move" in knocked[0]["text"]
+    touches = data["physics"]["touches"]
+    assert touches[0]["object"] == "a" and touches[0]["link"] == "panda_leftfinger"
+    assert touches[0]["phase"] == 0
+    # the plan as made touches nothing it keeps clear
+    inputs = load_inputs(_written(tmp_path))
+    assert replay_physics(inputs, mode_kind_of(inputs.modes)).touches == ()
+
+
+def _written(tmp_path):
+    path = tmp_path / "aligned.json"
+    solution_file.write(tower_solution(), path)
+    return path

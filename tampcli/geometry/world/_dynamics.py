@@ -47,6 +47,8 @@ class Dynamics:
         self._sliding = [pb.getJointInfo(robot, j, physicsClientId=c)[2] == pb.JOINT_PRISMATIC
                          for j in self._fingers]
         self._links = [-1, *range(pb.getNumJoints(robot, physicsClientId=c))]
+        base = pb.getBodyInfo(robot, physicsClientId=c)[0].decode()
+        self._link_names = {-1: base or "base", **{j: name for name, j in links.items()}}
         self._held: str | None = None
         self._constraint: int | None = None
         self._released: set[str] = set()
@@ -180,6 +182,13 @@ class Dynamics:
         points = self._pb.getClosestPoints(self._robot, self._bodies[name], 0.0,
                                            physicsClientId=self._client)
         return max([0.0, *(-p[8] for p in points)])
+
+    def touching(self, name: str) -> tuple[str, ...]:
+        """The robot's links in contact with body `name` after the last step (none while
+        their collisions are off: held, or just released)."""
+        points = self._pb.getContactPoints(self._robot, self._bodies[name],
+                                           physicsClientId=self._client)
+        return tuple(dict.fromkeys(self._link_names.get(p[3], str(p[3])) for p in points))
 
     def step(self) -> None:
         self._restore_collisions()
