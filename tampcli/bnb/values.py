@@ -15,6 +15,12 @@ from tampcli.solution import SkeletonRecord
 DEFAULT_SKELETONS = 20  # drawn at most once there is an answer, unless `-k` says otherwise
 
 
+# The most processes `jobs = 0` gives, whatever the cores: each worker holds a World of
+# its own (about 170 MB with a Panda scene, measured), and a many-core machine (a CI runner's 64)
+# would spawn dozens for every solve. Measured: 2 (bench/results/parallel*.md).
+DEFAULT_JOBS_CAP = 4
+
+
 @dataclass(frozen=True)
 class BnBOptions:
     """Options of the skeleton search (checked when built).
@@ -38,7 +44,8 @@ class BnBOptions:
     jobs: skeletons whose NLPs are solved at once once there is a first solution, each
         in a worker process with a World of its own (bnb/parallel.py); 1 solves them
         here, one after another; 0 (the default): one per core this process may use
-        (`processes`). Before a first solution the search is serial whatever `jobs`.
+        (`processes`; at most DEFAULT_JOBS_CAP). Before a first solution the search
+        is serial whatever `jobs`.
     reserve: seconds of `time_limit` left to a pass after the search (action
         elimination): with an answer, the search stops at `time_limit - reserve`.
     """
@@ -53,12 +60,14 @@ class BnBOptions:
     reserve: float = 0.0
 
     def processes(self) -> int:
-        """`jobs`, 0 read as the cores this process may run on."""
+        """`jobs`, 0 read as the cores this process may run on, at most DEFAULT_JOBS_CAP."""
         if self.jobs:
             return self.jobs
         if hasattr(os, "sched_getaffinity"):
-            return max(len(os.sched_getaffinity(0)), 1)
-        return os.cpu_count() or 1
+            cores = len(os.sched_getaffinity(0))
+        else:
+            cores = os.cpu_count() or 1
+        return max(1, min(cores, DEFAULT_JOBS_CAP))
 
     def skeleton_limit(self, answered: bool) -> float:
         """How many skeletons the search draws at most, with or without an answer."""

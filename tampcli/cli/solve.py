@@ -64,7 +64,7 @@ FLAGS = (
          "the others in N - 1 worker processes, set up while this process looks for the "
          "first solution alone, as the serial search does (each skeleton drawn knowing "
          "every failure before it); 1: serial throughout",
-         short="-j", default_help="0: one per core"),
+         short="-j", default_help="0: one per core, at most 4"),
 )
 
 

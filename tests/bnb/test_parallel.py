@@ -173,7 +173,10 @@ def test_jobs_is_checked():
     for bad in (-1, 1.5, True):
         with pytest.raises(OptionError, match="jobs"):
             BnBOptions(jobs=bad)
-    assert BnBOptions(jobs=0).processes() >= 1 and BnBOptions(jobs=3).processes() == 3
+    from tampcli.bnb.values import DEFAULT_JOBS_CAP
+
+    assert 1 <= BnBOptions(jobs=0).processes() <= DEFAULT_JOBS_CAP
+    assert BnBOptions(jobs=3).processes() == 3 and BnBOptions(jobs=9).processes() == 9
 
 
 class _Deaf(_Threads):
