@@ -166,23 +166,18 @@ def _top(problem, key: str, moved) -> float | None:
     return z + info.half[2]
 
 
-def joined(out, climb: Approach | None, descent: Approach | None, q_a, q_b, segments: int,
-           waypoints: int):
-    """The outcome `out` of the motion between the outer rungs (over `segments`
-    segments) continued down the descent's rungs to q_b and preceded by the climb's
-    from q_a: the rungs become waypoints, and the cost is the whole path's as the path
-    NLP weighs a motion of that many segments, (N / waypoints) * sum |dq|^2 over its N
-    segments (path.phase_rows_fn), so that a motion with straight ends is not made
-    cheaper than the straight line by having more segments."""
+def joined(out, climb: Approach | None, descent: Approach | None, q_a, q_b,
+           scale: float):
+    """The outcome `out` of the carry between the top rungs continued down the
+    descent's rungs to q_b and preceded by the climb's from q_a: the rungs become
+    waypoints, their segments join the cost (scale * sum |dq|^2, as the NLP's)."""
     n = len(q_b)
     up = list(climb.qs) if climb is not None else []  # bottom rung first
     down = list(reversed(descent.qs)) if descent is not None else []  # top rung first
     x = np.vstack([*up, *np.asarray(out.x, dtype=float).reshape(-1, n), *down])
-    inner = out.cost * waypoints / segments  # its sum |dq|^2
     extra = 0.0
     for path in ([np.asarray(q_a, dtype=float), *up], [*down, np.asarray(q_b, dtype=float)]):
         if len(path) > 1:
             steps = np.diff(np.array(path), axis=0)
             extra += float(np.sum(steps * steps))
-    total = segments + len(up) + len(down)
-    return dataclasses.replace(out, x=x.reshape(-1), cost=total / waypoints * (inner + extra))
+    return dataclasses.replace(out, x=x.reshape(-1), cost=out.cost + scale * extra)

@@ -68,7 +68,7 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     if out.status != "solved":
         return out
     segments = len(out.x) // problem.n + 1
-    return joined(out, climb, descent, ctx.q_a, ctx.q_b, segments, problem.options.waypoints)
+    return joined(out, climb, descent, ctx.q_a, ctx.q_b, segments / problem.options.waypoints)
 
 
 def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):

@@ -137,16 +137,13 @@ def test_the_descent_is_appended_to_the_carry_and_to_its_cost(tmp_path):
         free = np.vstack([problem.world.start + (a.qs[-1] - problem.world.start) * i / 4
                           for i in range(1, 4)])
         out = NlpOutcome(free.reshape(-1), "solved", 0.5, 0.0, None, 3, None, "")
-        done = joined(out, None, a, problem.world.start, q_b, 4, 2)
+        done = joined(out, None, a, problem.world.start, q_b, 2.0)
         waypoints = done.x.reshape(-1, n)
         # the free part's interior, then the rungs from the top down (q_b is the keyframe)
         np.testing.assert_array_equal(waypoints[:3], free)
         np.testing.assert_array_equal(waypoints[3:], np.array(a.qs[::-1]))
         path = np.vstack([*a.qs[::-1], q_b])
-        # 4 segments of 2 waypoints' worth cost 0.5: sum |dq|^2 0.25; with the rungs,
-        # 4 + rungs segments, each weighed (4 + rungs) / 2
-        rungs = float(np.sum(np.diff(path, axis=0) ** 2))
-        assert done.cost == pytest.approx((4 + a.rungs) / 2 * (0.25 + rungs))
+        assert done.cost == pytest.approx(0.5 + 2.0 * float(np.sum(np.diff(path, axis=0) ** 2)))
 
 
 def test_a_climb_is_prepended_to_the_carry_and_to_its_cost(tmp_path):
@@ -158,13 +155,12 @@ def test_a_climb_is_prepended_to_the_carry_and_to_its_cost(tmp_path):
         q_b = problem.world.start
         free = np.vstack([climb.qs[-1] + (q_b - climb.qs[-1]) * i / 4 for i in range(1, 4)])
         out = NlpOutcome(free.reshape(-1), "solved", 0.5, 0.0, None, 3, None, "")
-        done = joined(out, climb, None, q_a, q_b, 4, 2)
+        done = joined(out, climb, None, q_a, q_b, 2.0)
         waypoints = done.x.reshape(-1, problem.n)
         np.testing.assert_array_equal(waypoints[:climb.rungs], np.array(climb.qs))
         np.testing.assert_array_equal(waypoints[climb.rungs:], free)
         path = np.vstack([q_a, *climb.qs])
-        rungs = float(np.sum(np.diff(path, axis=0) ** 2))
-        assert done.cost == pytest.approx((4 + climb.rungs) / 2 * (0.25 + rungs))
+        assert done.cost == pytest.approx(0.5 + 2.0 * float(np.sum(np.diff(path, axis=0) ** 2)))
 
 
 def test_a_can_taken_from_between_rims_leaves_them_standing(cli, tmp_path):
