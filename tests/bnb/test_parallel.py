@@ -212,20 +212,20 @@ def test_a_new_incumbent_spares_the_path_stage_of_a_skeleton_out_and_changes_no_
 
 
 def test_a_skeleton_out_hears_of_a_lower_rank_answer_before_the_books_take_it():
-    """#1, solved in this process, is slow; #2's answer (objective 0.4), found by the
-    worker meanwhile, waits on #1 for its turn in the books, but #3, queued behind it
-    in the same worker, hears of it at once (Workers.found, told by the worker
-    itself) and stops at its keyframe bound (0.5 + 0.2 >= 0.4): no path stage; the
-    books as the serial search's."""
-    plans = [(("a", "b"), 2.0), (("c", "d"), 2.0), (("e", "f"), 2.0)]
-    table = {(("a",), "path"): R("solved", 1.5), (("c",), "path"): R("solved", 0.2),
-             (("c",), "keyframes"): R("solved", 0.1),
+    """#1 answers first, alone (objective 3.0). Then #2, solved in this process, is
+    slow; #3's answer (objective 0.4), found by the worker meanwhile, waits on #2 for
+    its turn in the books, but #4, queued behind it in the same worker, hears of it at
+    once (Workers.found, told by the worker itself) and stops at its keyframe bound
+    (0.5 + 0.2 >= 0.4): no path stage; the books as the serial search's."""
+    plans = [(("a", "b"), 2.0), (("s", "t"), 2.0), (("c", "d"), 2.0), (("e", "f"), 2.0)]
+    table = {(("a",), "path"): R("solved", 2.8), (("s",), "path"): R("solved", 1.5),
+             (("c",), "path"): R("solved", 0.2), (("c",), "keyframes"): R("solved", 0.1),
              (("e",), "keyframes"): R("solved", 0.5), (("e",), "path"): R("solved", 0.6)}
     calls = []
     quick = table_evaluator(table, calls)
 
     def evaluate(ops, stage, warm, cutoff=None):
-        if ops[0].name == "a" and stage == "path":
+        if ops[0].name == "s" and stage == "path":
             time.sleep(0.6)
         return quick(ops, stage, warm, cutoff)
 
@@ -237,7 +237,7 @@ def test_a_skeleton_out_hears_of_a_lower_rank_answer_before_the_books_take_it():
     assert (("e", "f"), "path") not in calls
     serial = branch_and_bound(Source(plans), table_evaluator(table), BnBOptions())
     assert _books(result) == _books(serial)
-    assert [r.outcome for r in result.skeletons] == ["solved", "solved", "pruned"]
+    assert [r.outcome for r in result.skeletons] == ["solved", "solved", "solved", "pruned"]
 
 
 def test_this_process_solves_the_first_skeleton_and_a_worker_the_next():
