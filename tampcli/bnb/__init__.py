@@ -170,7 +170,7 @@ class _Search(StageSteps):
     def run(self) -> BnBResult:
         iterator = iter(self.skeletons)
         while True:
-            if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
+            if self._out_of_time():
                 stop = "time"
                 break
             if self.rank >= self.options.skeleton_limit(self.incumbent is not None):

@@ -134,7 +134,7 @@ class _ParallelSearch(_Search):
         stop = None
         started = False
         while True:
-            if self.elapsed() >= self.options.search_limit(self.incumbent is not None):
+            if self._out_of_time():
                 stop = "time"
                 break
             if not started and not self.options.first and self.elapsed() > WARM_AFTER:

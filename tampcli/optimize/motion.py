@@ -16,7 +16,7 @@ import numpy as np
 from tampcli.geometry.planar_route import RouteOptions, planar_route
 from tampcli.geometry.sampled_path import resample, sampled_path
 from tampcli.optimize import relocate
-from tampcli.optimize.approach import joined, lift, place_approach
+from tampcli.optimize.approach import joined
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.hand import narrowed
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
@@ -27,8 +27,7 @@ from tampcli.optimize.path import (
     sample_clearance,
     via_points,
 )
-from tampcli.optimize.planar_approach import straight
-from tampcli.optimize.retreat import arrival, departure
+from tampcli.optimize.retreat import straight_ends
 
 LAZY_BAND = 0.01  # m: a point between waypoints this close to its limit gets its rows
 LAZY_ROUNDS = 3
@@ -47,13 +46,7 @@ def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     (approach.py; the planar disk's: straight ends in the plane, planar_approach.py),
     the ends joined to it. `warm`, as this returns it, ends included."""
     problem = run.problem
-    m = problem.motions[ctx.index]
-    climb = lift(problem, m, ctx.q_a, ctx.held, ctx.moved, run.checker) or straight(
-        problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, run.checker, m.leave_contact) \
-        or departure(problem, m, ctx.q_a, ctx.moved, run.checker)
-    descent = place_approach(problem, m, ctx.q_b, ctx.held, ctx.moved, run.checker) or \
-        straight(problem, m, ctx.q_b, ctx.q_a, ctx.held, ctx.moved, run.checker,
-                 m.enter_contact) or arrival(problem, m, ctx.q_b, ctx.moved, run.checker)
+    climb, descent = straight_ends(problem, problem.motions[ctx.index], ctx, run.checker)
     if climb is None and descent is None:
         return _solve_motion(run, ctx, T, checks, label, warm)
     first = climb.rungs if climb is not None else 0

@@ -32,9 +32,32 @@ from __future__ import annotations
 
 import numpy as np
 
-from tampcli.optimize.approach import IK_TOLERANCE, RUNG, SLACK, Approach, rung_clear, stacked
+from tampcli.optimize.approach import (
+    IK_TOLERANCE,
+    RUNG,
+    SLACK,
+    Approach,
+    lift,
+    place_approach,
+    rung_clear,
+    stacked,
+)
+from tampcli.optimize.planar_approach import straight
 
 REACH = 0.10  # m: the longest straight end along the axis
+
+
+def straight_ends(problem, m, ctx, checker) -> tuple[Approach | None, Approach | None]:
+    """(climb, descent): the straight ends motion m (its context `ctx`) starts and ends
+    with, each None where it has none: a carry's vertical ones (approach.py), the
+    planar disk's in the plane (planar_approach.py), else the empty hand's here."""
+    climb = lift(problem, m, ctx.q_a, ctx.held, ctx.moved, checker) or straight(
+        problem, m, ctx.q_a, ctx.q_b, ctx.held, ctx.moved, checker, m.leave_contact) \
+        or departure(problem, m, ctx.q_a, ctx.moved, checker)
+    descent = place_approach(problem, m, ctx.q_b, ctx.held, ctx.moved, checker) or \
+        straight(problem, m, ctx.q_b, ctx.q_a, ctx.held, ctx.moved, checker,
+                 m.enter_contact) or arrival(problem, m, ctx.q_b, ctx.moved, checker)
+    return climb, descent
 
 
 def departure(problem, m, q_a, moved: dict, checker) -> Approach | None:
