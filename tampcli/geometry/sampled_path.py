@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import gc
 import time
+from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
@@ -48,6 +49,8 @@ REFINE = 4
 # m: how much deeper than at the nearer end a pair may be near an end (numerical noise
 # on a touching contact; it may not cut through what the motion starts or ends at).
 CONTACT_DEPTH = 2e-4
+# Configurations of an edge asked of the checker at once.
+EDGE_BATCH = 32
 
 
 @dataclass(frozen=True)
@@ -94,22 +97,44 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
 
     horizon = options.clearance + 0.01
 
-    def pairs(q: np.ndarray) -> dict:
-        return {(c.a, c.b): c.distance
-                for c in checker.distances(q, body_poses, held, ignore, horizon)}
+    def pairs(qs: np.ndarray) -> list[dict]:
+        rows = checker.distances_many(qs, body_poses, held, [ignore] * len(qs), horizon)
+        return [{(c.a, c.b): c.distance for c in row} for row in rows]
 
-    at_start, at_goal = pairs(q_start), pairs(q_goal)
+    at_start, at_goal = pairs(q_start[None])[0], pairs(q_goal[None])[0]
     made = [0]  # validity checks so far
+
+    def judge(qs: np.ndarray) -> np.ndarray:
+        """Each row's validity, asked in one batch (uncounted: the caller counts)."""
+        out = np.ones(len(qs), dtype=bool)
+        for r, (q, found) in enumerate(zip(qs, pairs(qs), strict=True)):
+            ends = [at for end, at in ((q_start, at_start), (q_goal, at_goal))
+                    if np.linalg.norm(q - end) <= options.endpoint_slack]
+            for pair, d in found.items():
+                floor = min([options.clearance] + [at.get(pair, np.inf) - CONTACT_DEPTH
+                                                   for at in ends])
+                if d < floor:
+                    out[r] = False
+                    break
+        return out
 
     def valid(q: np.ndarray) -> bool:
         made[0] += 1
-        ends = [at for end, at in ((q_start, at_start), (q_goal, at_goal))
-                if np.linalg.norm(q - end) <= options.endpoint_slack]
-        for pair, d in pairs(q).items():
-            floor = min([options.clearance] + [at.get(pair, np.inf) - CONTACT_DEPTH
-                                               for at in ends])
-            if d < floor:
+        return bool(judge(np.asarray(q, float)[None])[0])
+
+    def edge(a: np.ndarray, b: np.ndarray, count: int) -> bool:
+        """OMPL's check of the edge a -> b in `count` steps (`_edge_order`), its
+        configurations asked in batches: a checker call costs about six configurations'
+        worth of its own (numpy's per-call work), and RRT-Connect's edges are up to 20
+        steps. Counted as OMPL counts: up to and including the first invalid one."""
+        order = _edge_order(count)
+        for lo_ in range(0, len(order), EDGE_BATCH):
+            ts = order[lo_:lo_ + EDGE_BATCH] / count
+            ok = judge(a[None] + ts[:, None] * (b - a)[None])
+            if not ok.all():
+                made[0] += int(np.argmin(ok)) + 1
                 return False
+            made[0] += len(ts)
         return True
 
     deadline = np.inf if options.deadline is None else options.deadline
@@ -130,12 +155,12 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
         for resolution in (options.resolution, options.resolution / REFINE):
             if made[0] >= limit:
                 break
-            found = _query(ob, og, n, lo, hi, q_start, q_goal, valid, resolution, made,
-                           limit - made[0], options.simplify_checks, spent, deadline)
+            found = _query(ob, og, n, lo, hi, q_start, q_goal, (valid, edge), resolution,
+                           made, limit - made[0], options.simplify_checks, spent, deadline)
             if found is None:
                 break
             path = found
-            if _edges_valid(path, valid, fine):
+            if _edges_valid(path, edge, fine):
                 break
     finally:
         gc.collect()
@@ -146,10 +171,12 @@ def sampled_path(checker, q_start, q_goal, lower, upper, *, body_poses=None, hel
     return path
 
 
-def _query(ob, og, n, lo, hi, q_start, q_goal, valid, resolution, made, checks,
+def _query(ob, og, n, lo, hi, q_start, q_goal, checks_of, resolution, made, checks,
            simplify_checks, spent, deadline):
     """One RRT-Connect query (with restarts) and its shortcutting at `resolution`: the
-    path (K, n), or None; every OMPL object released before returning."""
+    path (K, n), or None; every OMPL object released before returning. `checks_of`:
+    (a configuration's validity, an edge's in a number of steps)."""
+    valid, edge = checks_of
     space = ob.RealVectorStateSpace(n)
     bounds = ob.RealVectorBounds(n)
     for i in range(n):
@@ -161,6 +188,9 @@ def _query(ob, og, n, lo, hi, q_start, q_goal, valid, resolution, made, checks,
                                                               float, n)))
     info = setup.getSpaceInformation()
     info.setStateValidityCheckingResolution(resolution)
+    batched = _batched_edges(ob, info, space, n, edge)
+    if batched is not None:  # (None: OMPL's own, one configuration a call; tests compare)
+        info.setMotionValidator(batched)
     start, goal = space.allocState(), space.allocState()
     for i in range(n):
         start[i], goal[i] = float(q_start[i]), float(q_goal[i])
@@ -174,18 +204,42 @@ def _query(ob, og, n, lo, hi, q_start, q_goal, valid, resolution, made, checks,
         path = np.array([[found.getState(k)[i] for i in range(n)]
                          for k in range(found.getStateCount())])
         del found
-    del setup, info, start, goal, space, bounds
+    del setup, info, start, goal, space, bounds, batched
     return path
 
 
-def _edges_valid(path: np.ndarray, valid, step: float) -> bool:
+def _edges_valid(path: np.ndarray, edge, step: float) -> bool:
     """Every edge of `path` valid at points `step` apart (joint-space distance)."""
-    for a, b in zip(path[:-1], path[1:], strict=True):
-        count = int(np.ceil(np.linalg.norm(b - a) / step))
-        for s in np.arange(1, count) / max(count, 1):
-            if not valid(a + s * (b - a)):
-                return False
-    return True
+    return all(edge(a, b, max(1, int(np.ceil(np.linalg.norm(b - a) / step))))
+               for a, b in zip(path[:-1], path[1:], strict=True))
+
+
+def _edge_order(count: int) -> np.ndarray:
+    """The steps (of `count`) OMPL's DiscreteMotionValidator checks on an edge, in its
+    order: the far end, then the midpoints of ever smaller halves (a collision is
+    found sooner than walking the edge)."""
+    order, spans = [count], deque([(1, count - 1)] if count >= 2 else [])
+    while spans:
+        first, last = spans.popleft()
+        mid = (first + last) // 2
+        order.append(mid)
+        if first < mid:
+            spans.append((first, mid - 1))
+        if last > mid:
+            spans.append((mid + 1, last))
+    return np.array(order, dtype=float)
+
+
+def _batched_edges(ob, info, space, n: int, edge):
+    """OMPL's discrete edge check, with the configurations of an edge asked at once."""
+
+    class BatchedEdges(ob.MotionValidator):
+        def checkMotion(self, s1, s2):
+            return edge(np.fromiter((s1[i] for i in range(n)), float, n),
+                        np.fromiter((s2[i] for i in range(n)), float, n),
+                        space.validSegmentCount(s1, s2))
+
+    return BatchedEdges(info)
 
 
 def _solve_with_restarts(setup, made: list, checks: int, spent, deadline: float) -> bool:

@@ -7,6 +7,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from tampcli.geometry import sampled_path as sp
 from tampcli.geometry.collision import CollisionChecker
 from tampcli.geometry.sampled_path import FINE, SamplingOptions, resample, sampled_path
 from tampcli.geometry.scene import RobotSpec, Scene
@@ -87,9 +88,9 @@ class _Counting:
     def __init__(self, checker):
         self.checker, self.asked = checker, 0
 
-    def distances(self, *args, **kwargs):
-        self.asked += 1
-        return self.checker.distances(*args, **kwargs)
+    def distances_many(self, qs, *args, **kwargs):
+        self.asked += len(qs)
+        return self.checker.distances_many(qs, *args, **kwargs)
 
 
 def test_the_same_seed_gives_the_same_path_and_another_seed_another():
@@ -106,14 +107,61 @@ def test_the_same_seed_gives_the_same_path_and_another_seed_another():
         assert first.shape != other.shape or not np.array_equal(first, other)
 
 
-def test_the_budget_counts_validity_checks():
+def _checks_made(monkeypatch) -> list:
+    """The validity checks counted so far, as each RRT-Connect query returns."""
+    made, original = [], sp._query
+
+    def counted(*args):
+        out = original(*args)
+        made.append(args[9][0])  # _query's `made`
+        return out
+
+    monkeypatch.setattr(sp, "_query", counted)
+    return made
+
+
+@pytest.mark.parametrize("gap, seed", [(0.14, 3), (0.12, 5), (0.2, 7)])
+def test_edges_asked_in_batches_give_ompls_own_path_and_count(gap, seed, monkeypatch):
+    """The batched edge check asks the configurations OMPL's DiscreteMotionValidator
+    would, and counts those it would have asked up to the first invalid one: the same
+    seed gives the same path, and the budget is spent alike."""
+    with World(_corridor_scene(gap)) as world:
+        checker = CollisionChecker(world)
+
+        def run(own: bool):
+            if own:
+                monkeypatch.setattr(sp, "_batched_edges", lambda *args: None)
+            made = _checks_made(monkeypatch)
+            path = sampled_path(checker, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
+                                options=SamplingOptions(checks=100_000, seed=seed))
+            monkeypatch.undo()
+            return path, made
+
+        batched, batched_made = run(own=False)
+        own, own_made = run(own=True)
+    assert batched is not None and own is not None
+    np.testing.assert_array_equal(batched, own)
+    assert batched_made == own_made
+
+
+def test_an_edge_is_checked_in_ompls_order():
+    assert sp._edge_order(1).tolist() == [1]
+    assert sp._edge_order(2).tolist() == [2, 1]
+    assert sp._edge_order(7).tolist() == [7, 3, 1, 5, 2, 4, 6]
+    assert sorted(sp._edge_order(20).tolist()) == list(range(1, 21))
+
+
+def test_the_budget_counts_validity_checks(monkeypatch):
     with World(_corridor_scene(0.09)) as world:  # no path: the whole budget is spent
         counting = _Counting(CollisionChecker(world))
+        made = _checks_made(monkeypatch)
         options = SamplingOptions(checks=3000, simplify_checks=0)
         assert sampled_path(counting, [-0.5, -0.5], [0.5, -0.5], world.lower, world.upper,
                             options=options) is None
-        # Two queries at the ends; OMPL stops within an edge's checks of the budget.
-        assert 3000 <= counting.asked <= 3000 + 2 + 200
+    # Two queries at the ends; OMPL stops within an edge's checks of the budget. The
+    # checker is asked every configuration of an edge at once, counted or not.
+    assert made and 3000 <= made[-1] <= 3000 + 2 + 200
+    assert counting.asked >= made[-1]
 
 
 def test_a_deadline_passed_stops_the_query_at_once():
