@@ -222,6 +222,12 @@ BLIND31 = {"p01": ("six items sorted into three rimmed trays among distractors (
            "p04": ("three of nine pucks to goals through clutter (planar)", 6),
            "p05": ("a place set from a cluttered counter (Panda)", 8),
            "p06": ("two towers of three from a mixed pile (KUKA, base turned)", 10)}
+BLIND32 = {"p01": ("a sliding-tile puzzle by pushes only (planar)", 6),
+           "p02": ("a rendezvous goal on one mat, an own hexagonal mesh (Panda)", 4),
+           "p03": ("a swap whose only buffer is the top of a third block (KUKA)", 6),
+           "p04": ("an 8 cm case, then a 1.6 cm coin stacked on it (xArm6)", 4),
+           "p05": ("an assembly with a symbolic fasten step, a derived goal (Panda)", 7),
+           "p06": ("plates on edge into a dish rack's 2.4 cm slots (KUKA)", 6)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -247,7 +253,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind23", BLIND23), ("blind24", BLIND24),
             ("blind25", BLIND25), ("blind26", BLIND26),
             ("blind27", BLIND27), ("blind28", BLIND28), ("blind29", BLIND29),
-            ("blind30", BLIND30), ("blind31", BLIND31),
+            ("blind30", BLIND30), ("blind31", BLIND31), ("blind32", BLIND32),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

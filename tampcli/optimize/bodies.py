@@ -147,6 +147,31 @@ def region_misfit(obj: str, info: BodyInfo, region) -> str | None:
             f"({100 * w:.1f} x {100 * h:.1f} cm) at any yaw")
 
 
+def face_misfit(obj: str, info: BodyInfo, support: BodyInfo, overhang: float) -> str | None:
+    """Why the object's footprint lies on the support's top face at no yaw and no
+    offset, sticking out at most `overhang` (stability.footprint_on_face's rule); None:
+    it does somewhere. Exact for boxes, cylinders and spheres, so a refusal is a proof
+    (blind32 p04: an 8 x 12 cm case onto a 2.4 cm coin, drawn in 319 skeletons)."""
+    if support.disk:
+        reach = support.half[0] + overhang  # every corner (the rim) within this of the axis
+        need = info.half[0] if info.disk else math.hypot(info.half[0], info.half[1])
+        fits = need <= reach + 1e-12
+    elif info.disk:
+        fits = info.half[0] <= min(support.half[0], support.half[1]) + overhang + 1e-12
+    else:
+        fits = rectangle_fits(2 * info.half[0], 2 * info.half[1],
+                              2 * (support.half[0] + overhang), 2 * (support.half[1] + overhang))
+    if fits:
+        return None
+
+    def size(b: BodyInfo) -> str:
+        return (f"{100 * 2 * b.half[0]:.1f} cm across" if b.disk
+                else f"{100 * 2 * b.half[0]:.1f} x {100 * 2 * b.half[1]:.1f} cm")
+
+    return (f"{obj} ({size(info)}) does not fit on the top of {support.name} "
+            f"({size(support)}) at any yaw")
+
+
 def rectangle_fits(a: float, b: float, w: float, h: float, tol: float = 1e-12) -> bool:
     """Whether an a x b rectangle fits inside a w x h one at some turn theta in
     [0, pi/2]: a cos + b sin <= w and a sin + b cos <= h. With R = |(a, b)| and

@@ -71,10 +71,12 @@ class GraspFamily(ABC):
         return None
 
     @abstractmethod
-    def grip(self, info, choice: GripChoice, fingertip: float, clearance: float) -> Grip:
+    def grip(self, info, choice: GripChoice, fingertip: float, clearance: float,
+             closed: float | None = None) -> Grip:
         """The grip of `choice` on an object (`info`: bodies.BodyInfo); `fingertip`:
         how far the fingertips reach beyond the tool origin; `clearance`: what they
-        keep from the support."""
+        keep from the support; `closed`: how far at their deepest as they close on it
+        (hand.closing_depth; None: as far as `fingertip`)."""
 
     starts: tuple[float, ...] = (0.0,)  # grip parameters the initial guess tries
 
@@ -93,11 +95,14 @@ class Top(GraspFamily):
 
     name = "top"
 
-    def grip(self, info, choice, fingertip, clearance):
+    def grip(self, info, choice, fingertip, clearance, closed=None):
         # Deep enough to hold, shallow enough that the fingertips stay clear of
-        # whatever the object stands on (thin discs, trays with rims).
-        clear = 2 * info.half[2] - fingertip - clearance - REST_TOLERANCE
-        depth = float(np.clip(min(FINGER_DEPTH, clear), MIN_DEPTH, info.half[2]))
+        # whatever the object stands on (thin discs, trays with rims) as they close.
+        # Fingertips that swing down as they close (the xArm6's) hold lower than the
+        # tool origin by what they gain: the grasp point may be that much higher.
+        gain = 0.0 if closed is None else max(closed - fingertip, 0.0)
+        clear = 2 * info.half[2] - fingertip - gain - clearance - REST_TOLERANCE
+        depth = float(np.clip(min(FINGER_DEPTH, clear), MIN_DEPTH - gain, info.half[2]))
         return TopGrip((0.0, 0.0, info.half[2] - depth),
                        psi=choice.psi if choice.psi is not None else 0.0)
 
@@ -123,7 +128,7 @@ class Side(GraspFamily):
                     f"from the side (at least {100 * SIDE_MIN_HEIGHT:.0f} cm)")
         return super().why_not(info, opening)
 
-    def grip(self, info, choice, fingertip, clearance):
+    def grip(self, info, choice, fingertip, clearance, closed=None):
         psi = choice.psi if choice.psi is not None else 0.0
         along = info.half[0] if info.disk else (
             info.half[0] if abs(math.cos(psi)) > 0.5 else info.half[1])

@@ -32,6 +32,9 @@ from tampcli.solution_read import FINGERED_MODELS
 # replay closes from.
 CLEARANCE = 0.006
 _BISECTIONS = 30
+# Finger positions from the hand's opening to the object's width at which the
+# fingertips' reach is measured (`closing_depth`).
+CLOSING_SAMPLES = 8
 
 
 @dataclass(frozen=True)
@@ -70,19 +73,44 @@ def hand_for(world, width: float | None, clearance: float = CLEARANCE,
     full = open_hand(world)
     if width is None or full.opening is None or width + 2 * clearance >= full.opening:
         return full
-    need = width + 2 * clearance
+    values, opening, depth = world.gripper_at(_fraction(world, width + 2 * clearance,
+                                                        bisections))
+    return Hand(values, opening, depth)
+
+
+def _fraction(world, need: float, bisections: int) -> float:
+    """The most closed fraction of the fingers' travel (World.gripper_at) whose opening
+    is at least `need`, by `bisections` halvings."""
     lo, hi = 0.0, 1.0  # opening(lo) >= need > opening(hi)
     if world.gripper_at(hi)[1] >= need:
-        lo = hi
-    else:
-        for _ in range(bisections):
-            mid = 0.5 * (lo + hi)
-            if world.gripper_at(mid)[1] >= need:
-                lo = mid
-            else:
-                hi = mid
-    values, opening, depth = world.gripper_at(lo)
-    return Hand(values, opening, depth)
+        return hi
+    for _ in range(bisections):
+        mid = 0.5 * (lo + hi)
+        if world.gripper_at(mid)[1] >= need:
+            lo = mid
+        else:
+            hi = mid
+    return lo
+
+
+def closing_depth(problem, width: float) -> float:
+    """How far beyond the tool origin the fingertips reach at their deepest as they
+    close from the hand the plan keeps onto an object `width` wide. Fingers that slide
+    (the Panda's, the KUKA's) reach as far as open; a linkage's fingertips swing down as
+    they close (the xArm6's: 1.1 cm open, 2.0 cm touching a 2.4 cm coin), and a top
+    grasp of a thin object must keep them clear of its support (blind32 p04: the coin's
+    support met 1 cm deep by the closing sweep on every grasp tried). Kept in the
+    World's `measures`."""
+    world, hand = problem.world, problem.hand
+    if world.gripper_opening is None:
+        return hand.depth
+    key = ("closing depth", round(width, 6), hand.values)
+    if key not in world.measures:
+        start = 0.0 if hand.values is None else _fraction(world, hand.opening, _BISECTIONS)
+        end = max(start, _fraction(world, width, _BISECTIONS))
+        world.measures[key] = max([hand.depth] + [world.gripper_at(t)[2] for t in
+                                                  np.linspace(start, end, CLOSING_SAMPLES)])
+    return world.measures[key]
 
 
 def hand_of(problem, choices: dict) -> Hand:

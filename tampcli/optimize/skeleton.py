@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from tampcli.optimize.bodies import REST_TOLERANCE, region_misfit
+from tampcli.optimize.bodies import REST_TOLERANCE, face_misfit, region_misfit
 
 if TYPE_CHECKING:
     from tampcli.optimize.kinds.base import ModeKind
@@ -121,6 +121,15 @@ class Lowering:
             raise LoweringError(f"{label}: {why} (as its bounding box)", proved=False)
         if why:
             raise ImpossibleAction(f"{label}: {why}", op.action, obj, (role, region))
+
+    def fits_on(self, label: str, op, obj: str, body: str, overhang: float) -> None:
+        """Raise where obj's footprint lies on `body`'s top face in no orientation (as
+        `fits` does; unproved where either is a mesh's or URDF's bounding box)."""
+        why = face_misfit(obj, self.infos[obj], self.infos[body], overhang)
+        if why and not (self.infos[obj].exact and self.infos[body].exact):
+            raise LoweringError(f"{label}: {why} (as a bounding box)", proved=False)
+        if why:
+            raise ImpossibleAction(f"{label}: {why}", op.action, obj, ("on", body))
 
     def movable(self, label: str, obj: str | None) -> None:
         if obj is None or obj not in self.infos:

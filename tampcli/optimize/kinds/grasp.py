@@ -19,6 +19,7 @@ from tampcli.optimize import constraints as C
 from tampcli.optimize import grasp_families as F
 from tampcli.optimize.bodies import TOUCH_TOLERANCE, pose_matrix
 from tampcli.optimize.grips import touch_distance
+from tampcli.optimize.hand import closing_depth
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import ImpossibleAction, LoweringError, Step
 from tampcli.optimize.values import GripChoice
@@ -98,8 +99,10 @@ class Grasp(ModeKind):
         return step
 
     def grip(self, problem, step, choice):
-        return F.family_of(choice).grip(problem.bodies[step.obj], choice,
-                                        problem.hand.depth, problem.options.margin)
+        body = problem.bodies[step.obj]
+        closed = closing_depth(problem, F.closing_width(body, choice.psi or 0.0))
+        return F.family_of(choice).grip(body, choice, problem.hand.depth,
+                                        problem.options.margin, closed)
 
     def final_rows(self, walk, step):
         walk.state.pop(step.obj, None)
@@ -165,14 +168,27 @@ class Grasp(ModeKind):
                 return [f"{step.name}: the robot does not touch {step.obj} "
                         f"({100 * (math.hypot(d[0], d[1]) - reach):.1f} cm away)"]
             return []
-        local = obj[:3, :3].T @ d
-        if np.any(np.abs(local) > np.array(info.half) + TOUCH_TOLERANCE):
+        # Or the point the fingertips close at, where they swing down as they close
+        # (hand.closing_depth: the xArm6's hold a thin object with the tool origin
+        # above its top).
+        gain = max(closing_depth(problem, _across(info, obj, tool)) - problem.hand.depth, 0.0)
+        half = np.array(info.half) + TOUCH_TOLERANCE
+        if all(np.any(np.abs(obj[:3, :3].T @ (d + shift * tool[:3, 2])) > half)
+               for shift in dict.fromkeys((0.0, gain))):
             return [f"{step.name}: the grasp point is outside {step.obj}"]
         families = step.kind.families
         if not any(F.FAMILIES[f].holds(tool, obj) for f in families):
             return [f"{step.name}: the gripper holds {step.obj} in no grasp family it may use "
                     f"({', '.join(families)})"]
         return []
+
+
+def _across(info, obj: np.ndarray, tool: np.ndarray) -> float:
+    """The object's width along the tool's y axis, the fingers' closing axis."""
+    if info.disk:
+        return 2 * info.half[0]
+    axis = obj[:3, :3].T @ tool[:3, 1]
+    return float(2 * np.abs(axis) @ np.array(info.half))
 
 
 def _choose(walk, step, obj_pose) -> tuple[GripChoice, float, np.ndarray]:

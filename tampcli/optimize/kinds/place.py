@@ -17,7 +17,7 @@ from tampcli.optimize.bodies import REST_TOLERANCE, pose_matrix
 from tampcli.optimize.collide import held_of
 from tampcli.optimize.kinds.base import ModeKind
 from tampcli.optimize.skeleton import ImpossibleAction, LoweringError, Step
-from tampcli.optimize.stability import unstable
+from tampcli.optimize.stability import OVERHANG, unstable
 
 
 class Place(ModeKind):
@@ -45,6 +45,7 @@ class Place(ModeKind):
             body = target
             if lo.holds_up(obj, target):
                 raise LoweringError(f"{label}: {target} rests on {obj}")
+            lo.fits_on(label, op, obj, target, OVERHANG)
         else:
             raise LoweringError(f"{label}: the scene has no region or body {target!r}")
         z = lo.rest_z[body] + lo.infos[body].half[2] + lo.infos[obj].half[2]
