@@ -279,3 +279,28 @@ def test_check_warns_of_an_object_beyond_the_arms_reach(cli):
     assert run.code == 0
     warned = [line for line in run.err.splitlines() if "beyond its reach" in line]
     assert len(warned) == 1 and "object 'vase'" in warned[0], run.err
+
+
+def test_check_warns_of_an_object_no_grasp_of_the_arm_takes(cli, tmp_path):
+    """blind32 p04 (written blind): its author asked for a warning before a 60 s solve.
+    The 1.6 cm coin and the 8 cm case are taken by the xArm6; a 1.0 cm coin and a
+    9 cm case are not."""
+    folder = tmp_path / "p04"
+    shutil.copytree(ROOT / "problems" / "blind32" / "p04", folder)
+    args = ("check", folder / "domain.pddl", folder / "p04.pddl")
+    run = cli(*args)
+    assert run.code == 0 and "only a push can move it" not in run.err, run.err
+    scene = folder / "p04.scene.toml"
+    text = scene.read_text()
+    for old, new in (("size = [0.012, 0.016]\npose = [0.3, 0.02, 0.008]",
+                      "size = [0.012, 0.010]\npose = [0.3, 0.02, 0.005]"),
+                     ("size = [0.08, 0.12, 0.06]", "size = [0.09, 0.12, 0.06]")):
+        assert old in text
+        text = text.replace(old, new)
+    scene.write_text(text)
+    run = cli(*args)
+    assert run.code == 0
+    assert ("warning: coin is 1.0 cm tall: lower than any grasp of the xarm6 takes (from "
+            "the top 1.41 cm and up") in run.err, run.err
+    assert "warning: case is 9.0 cm across at its narrowest: wider than the xarm6's " \
+           "gripper takes (8.2 cm); only a push can move it" in run.err

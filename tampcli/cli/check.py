@@ -44,7 +44,7 @@ def run(args, ui) -> int:
         scene = scene_part(domain, problem, args)
         summary["scene"] = scene
         if scene:
-            warnings += scene.get("warnings", []) + _near_start(scene)
+            warnings += scene.get("warnings", []) + _near_start(scene) + _ungraspable(scene)
         elif args.modes:
             warnings.append(f"{args.modes}: not checked, the problem has no scene")
     summary["warnings"] = warnings
@@ -71,6 +71,40 @@ def _near_start(scene: dict) -> list[str]:
             "then keeps at half that distance"
             for c in scene.get("start_contacts", [])
             if c.get("kind") == "robot-body" and c["distance"] < margin]
+
+
+def _ungraspable(scene: dict) -> list[str]:
+    """Movable boxes, cylinders and spheres no grasp of the arm can take, where a mode
+    grasps: too wide for its opening, or lower than its top grasp takes (its open
+    fingertips' reach plus grasp_families.MIN_DEPTH and the tight margin,
+    docs/formats.md, "Grasp") and than a side grasp's SIDE_MIN_HEIGHT. Only a push can
+    move such an object; a goal that needs it lifted fails at every skeleton."""
+    from tampcli.optimize import grasp_families as F
+
+    robot = scene["robot"]
+    opening, depth = robot.get("gripper_opening"), robot.get("fingertip_depth")
+    if opening is None or "grasp" not in scene.get("action_modes", {}).values():
+        return []
+    least = depth + F.MIN_DEPTH + OptimizeOptions().tight_margin
+    out = []
+    for body in scene["bodies"]:
+        size, shape = body["size"], body["shape"]
+        if body["fixed"] or shape not in ("box", "cylinder", "sphere"):
+            continue
+        across = min(size[:2]) if shape == "box" else 2 * size[0]
+        tall = {"box": size[-1], "cylinder": size[-1], "sphere": 2 * size[0]}[shape]
+        name, model = body["name"], robot["model"]
+        if not F.fits(across, opening):
+            out.append(f"{name} is {100 * across:.1f} cm across at its narrowest: wider than "
+                       f"the {model}'s gripper takes ({100 * (opening - F.GRIPPER_SLACK):.1f} "
+                       "cm); only a push can move it")
+        elif tall < least and tall < F.SIDE_MIN_HEIGHT:
+            out.append(f"{name} is {100 * tall:.1f} cm tall: lower than any grasp of the "
+                       f"{model} takes (from the top {100 * least:.2f} cm and up, its "
+                       f"fingertips reaching {100 * depth:.1f} cm beyond the tool origin; "
+                       f"from the side {100 * F.SIDE_MIN_HEIGHT:.0f} cm); only a push can "
+                       "move it")
+    return out
 
 
 # ---------------------------------------------------------------- the parts
