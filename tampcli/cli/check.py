@@ -80,10 +80,13 @@ def _ungraspable(scene: dict) -> list[str]:
     docs/formats.md, "Grasp") and than a side grasp's SIDE_MIN_HEIGHT. Only a push can
     move such an object; a goal that needs it lifted fails at every skeleton."""
     from tampcli.optimize import grasp_families as F
+    from tampcli.optimize.kinds import KINDS
 
     robot = scene["robot"]
     opening, depth = robot.get("gripper_opening"), robot.get("fingertip_depth")
-    if opening is None or "grasp" not in scene.get("action_modes", {}).values():
+    grasps = any(k in KINDS and KINDS[k].fingers is True
+                 for k in scene.get("action_modes", {}).values())
+    if opening is None or not grasps:
         return []
     least = depth + F.MIN_DEPTH + OptimizeOptions().tight_margin
     out = []
