@@ -428,6 +428,29 @@ def test_the_pen_goes_into_its_case_turned_45_degrees():
     assert 41.5 < turn < 48.5
 
 
+@pytest.mark.parametrize("order", [("brick", "can"), ("can", "brick")])
+def test_a_brick_and_a_can_share_a_tray_with_the_brick_turned_across(order):
+    """blind22 p01 (written blind): a 6 x 4 cm brick and a 4.8 cm can fit the 9.4 x 6.4
+    cm tray side by side only with the brick across it. From the packed row at their
+    start yaws (10.8 cm long) the final NLP ended with them 6 mm into each other in
+    both orders; the row now turns the brick a quarter, as it fits across."""
+    from tampcli.optimize.final_starts import _row_yaws, packed
+
+    folder = Path(__file__).resolve().parents[2] / "problems" / "blind22" / "p01"
+    homes = {"brick": "brick-home", "can": "can-home"}
+    skeleton = ops(*[f"({verb} {o} {where})" for o in order
+                     for verb, where in (("pick", homes[o]), ("place", "tray"))])
+    with lowered_folder(folder, "p01", skeleton) as problem:
+        brick = next(s.index for s in problem.steps if s.kind.places and s.obj == "brick")
+        turned = _row_yaws(problem)[brick] - problem.bodies["brick"].pose[3]
+        assert abs(math.cos(turned)) < 1e-9  # a quarter turn
+        placements, _ = packed(problem)
+        assert placements[brick].yaw == pytest.approx(problem.bodies["brick"].pose[3]
+                                                      + turned)
+        out = solve(problem, "final")
+    assert out.status == "solved", out.worst_constraint
+
+
 def test_a_fixed_body_clear_of_the_region_gets_no_apart_row():
     """stages._clear_of_region: the row is left out only where every footprint inside
     the region is C.GAP apart from the body's footprint (its bounding circle), so the
