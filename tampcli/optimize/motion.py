@@ -124,7 +124,11 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         # A push is straight: a sampled detour is no start for it.
         out = _solve_phase(run, ctx, T, checks, label, x0, opts.tight_margin)
         return out if out.status == "solved" else _clear_anyway(run, ctx, T, checks, label, out)
-    sampled = _sampled_start(run, ctx, FIRST_SHARE)
+    # The plane's grid proves there is no path at all (the bodies where they are): no
+    # sampling (blind33 p02: 23 s of it for a bar held across a door, the other grips
+    # then cut off by the stage's time).
+    blocked = _separated(run, ctx)
+    sampled = None if blocked else _sampled_start(run, ctx, FIRST_SHARE)
     if sampled is None:
         # No path past the objects this skeleton set down earlier: is one of them in
         # the way (the caller then moves it), or is the passage just hard to find?
@@ -139,7 +143,7 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         run.in_the_way = relocate.in_the_way(run, ctx, run.sampling(FIRST_SHARE),
                                              around.points)
         run.blocked_alone = ctx.held is not None and not held_blocks(run, ctx)
-    if sampled is None and not run.in_the_way:
+    if sampled is None and not run.in_the_way and not blocked:
         # Its time ends early enough for the pass below (a fourth of what is left) on a
         # machine too slow for the checks budgeted: cut off at the stage's limit, a
         # blocked motion would fail naming the wall, not the body.
@@ -209,18 +213,33 @@ def _planar_route(run, ctx, left_out: frozenset[str] = frozenset()):
     by the options' margin where it can be, or None; the bodies `left_out` ignored.
     Each asked once per stage solve (`passable` asks before the motion's solve does)."""
     problem = run.problem
-    key = (ctx.index, ctx.q_a.tobytes(), ctx.q_b.tobytes(),
-           None if ctx.held is None else (ctx.held.name, ctx.held.t),
-           tuple(sorted((n, p.tobytes()) for n, p in ctx.moved.items())), left_out)
+    key = _route_key(ctx, left_out)
     if key not in run.routes:
         opts = problem.options
         m = problem.motions[ctx.index]
         options = RouteOptions(clearance=opts.tight_margin, comfort=opts.margin + ROUTE_ROOM)
+        report: dict = {}
         run.routes[key] = planar_route(
             run.checker, ctx.q_a, ctx.q_b, problem.world.lower, problem.world.upper,
             body_poses=ctx.moved, held=held_spec(ctx.held),
-            ignore=allowed_contacts(m) | left_out, options=options)
+            ignore=allowed_contacts(m) | left_out, options=options, report=report)
+        if report.get("separated"):
+            run.separated.add(key)
     return run.routes[key]
+
+
+def _separated(run, ctx) -> bool:
+    """Whether the planar motion `ctx`'s grid proves no path joins its ends, the
+    bodies where they are (planar_route._separated): no sampling can find one."""
+    if not run.problem.planar or _planar_route(run, ctx) is not None:
+        return False
+    return _route_key(ctx) in run.separated
+
+
+def _route_key(ctx, left_out: frozenset[str] = frozenset()) -> tuple:
+    return (ctx.index, ctx.q_a.tobytes(), ctx.q_b.tobytes(),
+            None if ctx.held is None else (ctx.held.name, ctx.held.t),
+            tuple(sorted((n, p.tobytes()) for n, p in ctx.moved.items())), left_out)
 
 
 def _route_around(run, ctx):

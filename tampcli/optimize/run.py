@@ -38,6 +38,7 @@ class Run:
         self.anchors = None  # relocate.Relocation.anchors the keyframe NLP keeps to
         self.cutoff = None  # a trajectory cost the caller has no use for reaching (bounded)
         self.routes: dict = {}  # the planar grid routes found, by motion (motion.py)
+        self.separated: set = set()  # the keys of `routes` whose grid proves no path
 
     def result(self, status: str, **fields) -> TrajectoryResult:
         fields.setdefault("bound_kind", "heuristic" if self.stage != "final" else "proved")

@@ -79,3 +79,33 @@ def test_bad_options_are_refused():
         RouteOptions(step=0.0)
     with pytest.raises(ValueError):
         RouteOptions(clearance=0.05, comfort=0.04)
+
+
+def _door(gap: float) -> Scene:
+    """A wall across the floor at x = 0, 2 cm thick, with one door `gap` wide at y = 0;
+    the disk (10 cm across) hovers 1 cm over the floor."""
+    side = (1.0 - gap) / 2
+    bodies = (
+        box("floor", (1.6, 1.0, 0.04), (0.0, 0.0, -0.02)),
+        box("north", (0.02, side, 0.1), (0.0, gap / 2 + side / 2, 0.05)),
+        box("south", (0.02, side, 0.1), (0.0, -gap / 2 - side / 2, 0.05)),
+    )
+    return Scene(None, RobotSpec("planar", base=(0.0, 0.0, 0.035) + IDENTITY,
+                                 start=(-0.5, 0.3), radius=0.05), bodies)
+
+
+@pytest.mark.parametrize("gap, separated", [(0.06, True), (0.09, True), (0.104, False),
+                                            (0.12, False), (0.3, False)])
+def test_a_door_too_narrow_for_the_disk_is_proved_closed_and_no_other(gap, separated):
+    """planar_route._separated: a proof only where no path exists (the disk is 10 cm
+    across, the clearance 1 mm: a 10.4 cm door passes it with 1 mm to spare a side,
+    which the 2 cm grid itself may not find a route through)."""
+    start, goal = np.array([-0.5, 0.3]), np.array([0.5, -0.3])
+    with World(_door(gap)) as world:
+        checker = CollisionChecker(world)
+        report = {}
+        route = planar_route(checker, start, goal, world.lower, world.upper,
+                             options=RouteOptions(), report=report)
+        assert report.get("separated", False) is separated
+        if separated:
+            assert route is None
