@@ -228,6 +228,12 @@ BLIND32 = {"p01": ("a sliding-tile puzzle by pushes only (planar)", 6),
            "p04": ("an 8 cm case, then a 1.6 cm coin stacked on it (xArm6)", 4),
            "p05": ("an assembly with a symbolic fasten step, a derived goal (Panda)", 7),
            "p06": ("plates on edge into a dish rack's 2.4 cm slots (KUKA)", 6)}
+BLIND33 = {"p01": ("a regrasp: the start walls the block's ends, the goal its faces (Panda)", 4),
+           "p02": ("a suction-face regrasp to pass a door end-on (planar)", 4),
+           "p03": ("front and back of a roofed two-deep cubby swapped (xArm6)", 8),
+           "p04": ("a one-object goal of 8 actions, a mesh blocker (KUKA)", 8),
+           "p05": ("a cubby opening away from the robot, its mouth plugged (Panda)", 4),
+           "p06": ("a dead-end channel whose order the slots decide (Panda)", 6)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -254,6 +260,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind25", BLIND25), ("blind26", BLIND26),
             ("blind27", BLIND27), ("blind28", BLIND28), ("blind29", BLIND29),
             ("blind30", BLIND30), ("blind31", BLIND31), ("blind32", BLIND32),
+            ("blind33", BLIND33),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
