@@ -64,11 +64,15 @@ def find(run, ctx, options: SamplingOptions) -> Obstruction | None:
     """The Obstruction of motion `ctx` by objects this skeleton moved, or None;
     `options`: the sampling query's budget and seed."""
     problem = run.problem
+    held = held_spec(ctx.held)
     movable = relocatable(problem, ctx.index, ctx.moved)
+    if held is not None:
+        # What the motion carries is no obstruction of its own (blind33 p02: a bar put
+        # back where it was and taken again, 17 s sampling a path that ignored it).
+        movable.pop(held[0], None)
     if not movable:
         return None
     m = problem.motions[ctx.index]
-    held = held_spec(ctx.held)
     ignore = allowed_contacts(m) | frozenset(movable)
     kept = {n: p for n, p in ctx.moved.items() if n not in movable}
     path = sampled_path(run.checker, ctx.q_a, ctx.q_b, problem.world.lower, problem.world.upper,
