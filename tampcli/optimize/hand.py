@@ -32,9 +32,9 @@ from tampcli.solution_read import FINGERED_MODELS
 # replay closes from.
 CLEARANCE = 0.006
 _BISECTIONS = 30
-# Finger positions from the hand's opening to the object's width at which the
-# fingertips' reach is measured (`closing_depth`).
-CLOSING_SAMPLES = 8
+# Fractions of the fingers' travel at which a linkage's fingertip reach is measured
+# (`_closing_table`).
+CLOSING_SAMPLES = 17
 
 
 @dataclass(frozen=True)
@@ -95,21 +95,37 @@ def _fraction(world, need: float, bisections: int) -> float:
 
 def closing_depth(problem, width: float) -> float:
     """How far beyond the tool origin the fingertips reach at their deepest as they
-    close from the hand the plan keeps onto an object `width` wide. Fingers that slide
-    (the Panda's, the KUKA's) reach as far as open; a linkage's fingertips swing down as
-    they close (the xArm6's: 1.1 cm open, 2.0 cm touching a 2.4 cm coin), and a top
-    grasp of a thin object must keep them clear of its support (blind32 p04: the coin's
-    support met 1 cm deep by the closing sweep on every grasp tried). Kept in the
-    World's `measures`."""
-    world, hand = problem.world, problem.hand
-    if world.gripper_opening is None:
+    close onto an object `width` wide (from fully open: at least as deep as from the
+    hand the plan keeps). Fingers that slide (the Panda's, the KUKA's) reach as far as
+    open; a linkage's fingertips swing down as they close (the xArm6's: 1.1 cm open,
+    2.0 cm touching a 2.4 cm coin), and a top grasp of a thin object must keep them
+    clear of its support (blind32 p04: the coin's support met 1 cm deep by the closing
+    sweep on every grasp tried). From `_closing_table`, one step of it past the touching
+    fraction (a conservative millimetre on the xArm6)."""
+    hand = problem.hand
+    table = _closing_table(problem.world)
+    if table is None:
         return hand.depth
-    key = ("closing depth", round(width, 6), hand.values)
+    openings, depths = table
+    wide = np.flatnonzero(openings >= width)
+    last = min((int(wide[-1]) if len(wide) else 0) + 1, len(depths) - 1)
+    return max(hand.depth, float(np.max(depths[:last + 1])))
+
+
+def _closing_table(world):
+    """(openings, fingertip depths) at CLOSING_SAMPLES fractions of the fingers' travel,
+    from open to closed; None for fingers whose depth does not change as they close
+    (within 0.5 mm at open, half and closed), or none. Kept in the World's
+    `measures`: measured once per World (about 2 ms a fraction)."""
+    key = ("closing table",)
     if key not in world.measures:
-        start = 0.0 if hand.values is None else _fraction(world, hand.opening, _BISECTIONS)
-        end = max(start, _fraction(world, width, _BISECTIONS))
-        world.measures[key] = max([hand.depth] + [world.gripper_at(t)[2] for t in
-                                                  np.linspace(start, end, CLOSING_SAMPLES)])
+        table = None
+        if world.gripper_opening is not None:
+            ends = [world.gripper_at(t)[2] for t in (0.0, 0.5, 1.0)]
+            if max(ends) - min(ends) > 5e-4:
+                rows = [world.gripper_at(t)[1:] for t in np.linspace(0.0, 1.0, CLOSING_SAMPLES)]
+                table = (np.array([r[0] for r in rows]), np.array([r[1] for r in rows]))
+        world.measures[key] = table
     return world.measures[key]
 
 
