@@ -13,9 +13,8 @@ import time
 
 import numpy as np
 
-from tampcli.geometry.planar_route import RouteOptions, planar_route
 from tampcli.geometry.sampled_path import resample, sampled_path
-from tampcli.optimize import relocate
+from tampcli.optimize import planar_motion, relocate
 from tampcli.optimize.approach import joined
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.hand import narrowed
@@ -37,7 +36,6 @@ SEED_BAND = 0.03  # m: a point between waypoints this close at the start has row
 # the rest for everything in place again.
 FIRST_SHARE = 0.25
 MAX_SEGMENTS_RATIO = 4  # a motion's segments at most, as a multiple of `waypoints`
-ROUTE_ROOM = 0.03  # m: beyond the margin, the clearance a planar route pays nothing for
 
 
 def solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
@@ -104,7 +102,7 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         # start closer to the optimum than a lift over everything (arm-kitchen's
         # motions: 2 or 3 SLSQP iterations from it, 11 to 14 from the lift).
         x0 = line.x
-    elif problem.planar and (route := _planar_route(run, ctx)) is not None:
+    elif problem.planar and (route := planar_motion.route(run, ctx)) is not None:
         # The plane's grid route, clear of the walls with the margin, however many it
         # turns around; its segments no longer than the disk is wide.
         T = planar_segments(route.points, T, problem.scene.robot.radius)
@@ -127,7 +125,7 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
     # The plane's grid proves there is no path at all (the bodies where they are): no
     # sampling (blind33 p02: 23 s of it for a bar held across a door, the other grips
     # then cut off by the stage's time).
-    blocked = _separated(run, ctx)
+    blocked = planar_motion.separated(run, ctx)
     sampled = None if blocked else _sampled_start(run, ctx, FIRST_SHARE)
     if sampled is None:
         # No path past the objects this skeleton set down earlier: is one of them in
@@ -135,14 +133,14 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         run.obstruction = relocate.find(run, ctx, run.sampling(FIRST_SHARE))
         if run.obstruction is not None:
             return out
-    if sampled is None and problem.planar and (around := _route_around(run, ctx)) is not None:
+    if sampled is None and problem.planar and (around := planar_motion.route_around(run, ctx)) is not None:
         # The plane's grid has a route only with the bodies at rest left out: one of them
         # is in the way, and its name is what the search learns from; the long sampling
         # below would most likely end the same (blind19 p04: the puck in the only
         # doorway, 15 s of sampling, then the same body named).
         run.in_the_way = relocate.in_the_way(run, ctx, run.sampling(FIRST_SHARE),
                                              around.points)
-        run.blocked_alone = ctx.held is not None and not held_blocks(run, ctx)
+        run.blocked_alone = ctx.held is not None and not planar_motion.held_blocks(run, ctx)
     if sampled is None and not run.in_the_way and not blocked:
         # Its time ends early enough for the pass below (a fourth of what is left) on a
         # machine too slow for the checks budgeted: cut off at the stage's limit, a
@@ -208,49 +206,6 @@ def planar_segments(path: np.ndarray, T: int, radius: float) -> int:
     return max(segments_for(path, T), wide)
 
 
-def _planar_route(run, ctx, left_out: frozenset[str] = frozenset()):
-    """The planar robot's grid route (geometry/planar_route.py) of this motion, clear
-    by the options' margin where it can be, or None; the bodies `left_out` ignored.
-    Each asked once per stage solve (`passable` asks before the motion's solve does)."""
-    problem = run.problem
-    key = _route_key(ctx, left_out)
-    if key not in run.routes:
-        opts = problem.options
-        m = problem.motions[ctx.index]
-        options = RouteOptions(clearance=opts.tight_margin, comfort=opts.margin + ROUTE_ROOM)
-        report: dict = {}
-        run.routes[key] = planar_route(
-            run.checker, ctx.q_a, ctx.q_b, problem.world.lower, problem.world.upper,
-            body_poses=ctx.moved, held=held_spec(ctx.held),
-            ignore=allowed_contacts(m) | left_out, options=options, report=report)
-        if report.get("separated"):
-            run.separated.add(key)
-    return run.routes[key]
-
-
-def _separated(run, ctx) -> bool:
-    """Whether the planar motion `ctx`'s grid proves no path joins its ends, the
-    bodies where they are (planar_route._separated): no sampling can find one."""
-    if not run.problem.planar or _planar_route(run, ctx) is not None:
-        return False
-    return _route_key(ctx) in run.separated
-
-
-def _route_key(ctx, left_out: frozenset[str] = frozenset()) -> tuple:
-    return (ctx.index, ctx.q_a.tobytes(), ctx.q_b.tobytes(),
-            None if ctx.held is None else (ctx.held.name, ctx.held.t),
-            tuple(sorted((n, p.tobytes()) for n, p in ctx.moved.items())), left_out)
-
-
-def _route_around(run, ctx):
-    """The grid route of the planar motion `ctx` with the bodies at rest left out
-    (relocate.resting), where it has none with them; else None."""
-    bodies = relocate.resting(run.problem, ctx)
-    if not bodies or _planar_route(run, ctx) is not None:
-        return None
-    return _planar_route(run, ctx, bodies)
-
-
 def passable(run, ctx) -> bool:
     """Whether the planar motion `ctx` has a start the NLP solves from at once: its
     straight line within the margin of everything, or the grid route round what is
@@ -260,14 +215,7 @@ def passable(run, ctx) -> bool:
     opts = run.problem.options
     _, violation = _straight_line(run, ctx, opts.waypoints, opts.interpolation_checks,
                                   "a passage check")
-    return violation < opts.margin or _planar_route(run, ctx) is not None
-
-
-def held_blocks(run, ctx) -> bool:
-    """Whether what the planar robot holds in the motion `ctx` is what leaves it no
-    grid route: the robot alone has one. Only then may another grip pass (robust-planar
-    pen-k4: the disk alone between two rails, where no face of the box makes room)."""
-    return _planar_route(run, dataclasses.replace(ctx, held=None, grasp=None)) is not None
+    return violation < opts.margin or planar_motion.route(run, ctx) is not None
 
 
 def _margins(run, ctx, margin: float, tight: float):

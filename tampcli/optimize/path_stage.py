@@ -23,7 +23,8 @@ from tampcli.optimize.keyframe_stage import (
     solve_placements,
 )
 from tampcli.optimize.kkt import combined
-from tampcli.optimize.motion import held_blocks, passable, solve_motion
+from tampcli.optimize.motion import passable, solve_motion
+from tampcli.optimize.planar_motion import held_blocks
 from tampcli.optimize.result import TrajectoryResult
 from tampcli.optimize.run import Run
 from tampcli.optimize.values import Keyframes
@@ -119,7 +120,7 @@ def _passable_first(run: Run, warm, order, narrow: bool):
     after: its sampler's long search (a fourth of the stage, then the look for a body
     in the way) is for when no grip has a route (robust-planar p03: a doorway with
     5 mm a side, which only the sampler finds). The look goes on past the first grip
-    only where what is held blocks its carry (motion.held_blocks: blind19 p04's
+    only where what is held blocks its carry (planar_motion.held_blocks: blind19 p04's
     door blocked by a puck looks no further), the carry that stopped it looked at
     first, from the grips that left the fewest carries blocked so far, and ends at
     SCREEN_SHARE of the time left (robust-planar pen-k4: its other

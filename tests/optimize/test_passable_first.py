@@ -13,7 +13,8 @@ import pytest
 from tampcli.optimize import path_stage
 from tampcli.optimize.assemble import walk
 from tampcli.optimize.keyframe_stage import keyframes_with
-from tampcli.optimize.motion import held_blocks, passable
+from tampcli.optimize.motion import passable
+from tampcli.optimize.planar_motion import held_blocks
 from tampcli.optimize.run import Run
 from tampcli.optimize.solve import solve
 
