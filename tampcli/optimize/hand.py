@@ -98,7 +98,7 @@ def closing_depth(problem, width: float) -> float:
     close onto an object `width` wide (from fully open: at least as deep as from the
     hand the plan keeps). Fingers that slide (the Panda's, the KUKA's) reach as far as
     open; a linkage's fingertips swing down as they close (the xArm6's: 1.1 cm open,
-    2.0 cm touching a 2.4 cm coin), and a top grasp of a thin object must keep them
+    2.4 cm closed on a 2.4 cm coin), and a top grasp of a thin object must keep them
     clear of its support (blind32 p04: the coin's support met 1 cm deep by the closing
     sweep on every grasp tried). From `_closing_table`, one step of it past the touching
     fraction (a conservative millimetre on the xArm6)."""

@@ -53,7 +53,7 @@ COIN = Path(__file__).resolve().parents[2] / "problems" / "blind32" / "p04"
 
 def test_the_xarms_fingertips_swing_down_as_they_close():
     """The xArm6's linkage: its fingertips reach 1.1 cm beyond the tool origin open and
-    about 2 cm touching a 2.4 cm coin; the KUKA's slide and reach as far closed as open."""
+    2.4 cm closed on a 2.4 cm coin; the KUKA's slide and reach as far closed as open."""
     with lowered_folder(COIN, "p04", ops("(pick coin coin-dish)", "(put coin ship)")) as xarm:
         open_depth = xarm.hand.depth
         assert closing_depth(xarm, 0.024) > open_depth + 0.005
