@@ -18,7 +18,8 @@ ROUTE_ROOM = 0.03  # m: beyond the margin, the clearance a planar route pays not
 def route(run, ctx, left_out: frozenset[str] = frozenset()):
     """The planar robot's grid route (geometry/planar_route.py) of this motion, clear
     by the options' margin where it can be, or None; the bodies `left_out` ignored.
-    Each asked once per stage solve (`passable` asks before the motion's solve does)."""
+    Each asked once per stage solve (`motion.passable` asks before the motion's
+    solve does)."""
     problem = run.problem
     key = _key(ctx, left_out)
     if key not in run.routes:
