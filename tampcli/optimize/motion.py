@@ -16,6 +16,7 @@ import numpy as np
 from tampcli.geometry.sampled_path import resample, sampled_path
 from tampcli.optimize import planar_motion, relocate
 from tampcli.optimize.approach import joined
+from tampcli.optimize.axial_start import axial_start
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.hand import narrowed
 from tampcli.optimize.nlp import FEASIBILITY, nlp_feasible, outcome_of
@@ -122,6 +123,12 @@ def _solve_motion(run, ctx, T: int, checks: int, label: str, warm=None):
         # A push is straight: a sampled detour is no start for it.
         out = _solve_phase(run, ctx, T, checks, label, x0, opts.tight_margin)
         return out if out.status == "solved" else _clear_anyway(run, ctx, T, checks, label, out)
+    axial = axial_start(run, ctx, T)
+    if axial is not None:
+        # In and out along the approach axis: an enclosure's only way (axial_start.py).
+        again = _solve_phase(run, ctx, T, checks, label, axial, margin)
+        if again.status == "solved" or time.perf_counter() > run.deadline:
+            return again
     # The plane's grid proves there is no path at all (the bodies where they are): no
     # sampling (blind33 p02: 23 s of it for a bar held across a door, the other grips
     # then cut off by the stage's time).
