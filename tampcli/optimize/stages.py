@@ -17,7 +17,14 @@ import numpy as np
 
 from tampcli.optimize import constraints as C
 from tampcli.optimize import stability as S
-from tampcli.optimize.collide import body_matrices, contact_rows, held_of, held_spec, row_keys
+from tampcli.optimize.collide import (
+    body_matrices,
+    contact_key,
+    contact_rows,
+    held_of,
+    held_spec,
+    row_keys,
+)
 from tampcli.optimize.expr import PoseX, RowSet, constant_pose, held_posex, planar_pose
 from tampcli.optimize.grips import held_pose
 from tampcli.optimize.layout import Layout, grip_block, keyframe_block, placement_block
@@ -216,10 +223,20 @@ class KeyframeWalk:
         return held_of(name, grip, t, t_block)
 
     def collide(self, k, step, held, frame, ignore) -> None:
+        """The keyframe's collision rows, queried after the walk; `ignore`: the bodies
+        it has no rows for. Where an arm sets an object down, its support is left out
+        of the object's rows only (it rests on it): the arm's links keep the tight
+        margin from it (blind34 p01: a low put-down under a hood solved with the
+        forearm 2.2 cm inside the table, which only the path stage's check found)."""
         if self.collisions:
             moved = {n: P for n, P in self.state.items() if P.jac}
+            support = step.support if (step.kind.places and held is not None
+                                        and not self.planar and step.support in ignore) \
+                else None
+            if support is not None:
+                ignore = set(ignore) - {support}
             self.pending.append((k, step.name, held, frame, frozenset(ignore), moved,
-                                 bool(step.kind.places)))
+                                 bool(step.kind.places), support))
 
     def placement_rows(self, step, P: PoseX) -> None:
         """The step's object rests at P from here on (it joins `state`), a box of a tower
@@ -259,8 +276,8 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
             [body_matrices(p[5]) for p in pending],
             [held_spec(p[2]) for p in pending],
             [p[4] for p in pending], opts.activation)
-        for (k, name, h, frame, ignore, moved, placing), found in zip(pending, contacts,
-                                                                      strict=True):
+        for (k, name, h, frame, ignore, moved, placing, support), found in zip(
+                pending, contacts, strict=True):
             keys, at = row_keys(bodies, ignore, h), [(keyframe_block(k), 1.0)]
             if placing and h is not None and not problem.planar:
                 # What an arm sets down keeps the placement rows' gap (`apart`: 1 mm) from
@@ -273,8 +290,10 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
                 # fail there and the tight retry takes the NLP's own angle, drift 0).
                 own = f"held:{h.name}"
                 contact_rows(rows.ineq, name, [c for c in found if c.a != own], at, frame,
-                             h, moved, keys, opts.activation, opts.margin)
-                contact_rows(rows.ineq, name, [c for c in found if c.a == own], at, frame,
+                             h, moved, keys, opts.activation, opts.margin,
+                             {support: opts.tight_margin} if support else None)
+                contact_rows(rows.ineq, name, [c for c in found if c.a == own
+                                               and contact_key(c) != support], at, frame,
                              h, moved, keys, opts.activation, opts.tight_margin,
                              {"self": opts.margin})
             else:
