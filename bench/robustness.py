@@ -234,6 +234,12 @@ BLIND33 = {"p01": ("a regrasp: the start walls the block's ends, the goal its fa
            "p04": ("a one-object goal of 8 actions, a mesh blocker (KUKA)", 8),
            "p05": ("a cubby opening away from the robot, its mouth plugged (Panda)", 4),
            "p06": ("a dead-end channel whose order the slots decide (Panda)", 6)}
+BLIND34 = {"p01": ("a tower of two under a low hood, the pieces chosen by shape (Panda)", 4),
+           "p02": ("a 3-cycle of three kinds into exact-fit regions (planar)", 5),
+           "p03": ("a crate unloaded, pushed twice, reloaded (KUKA)", 10),
+           "p04": ("a kit onto a turned fixture whose spots are taken (xArm6)", 8),
+           "p05": ("which of four neighbours to move to grip a part (Panda)", 6),
+           "p06": ("capacity-one trays with costs, the cheap tray wrong (Panda)", 6)}
 
 # problems/gen1 (drawn by its generate.py, written against 0869646): family, and the
 # actions of the shortest plan where known (its README: the generator's estimates were
@@ -261,6 +267,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind27", BLIND27), ("blind28", BLIND28), ("blind29", BLIND29),
             ("blind30", BLIND30), ("blind31", BLIND31), ("blind32", BLIND32),
             ("blind33", BLIND33),
+            ("blind34", BLIND34),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

@@ -143,10 +143,14 @@ class Label:
     unit: str = "m"  # how to print the violation: "m" (cm), "rad" (deg), "" (raw)
 
     def words(self, violation: float) -> str:
+        # Below what one decimal shows, the finer unit: a row failed by 0.3 mm read
+        # "by 0.0 cm", as if met (blind34 p06).
         if self.unit == "m":
-            amount = f"{100 * abs(violation):.1f} cm"
+            amount = f"{100 * abs(violation):.1f} cm" if abs(violation) >= 5e-4 \
+                else f"{1000 * abs(violation):.2f} mm"
         elif self.unit == "rad":
-            amount = f"{np.degrees(abs(violation)):.1f} deg"
+            deg = np.degrees(abs(violation))
+            amount = f"{deg:.1f} deg" if deg >= 0.05 else f"{deg:.3f} deg"
         else:
             amount = f"{abs(violation):.3g}"
         return f"{self.step}: {self.what} by {amount}"
