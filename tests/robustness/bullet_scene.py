@@ -134,6 +134,7 @@ class Replay:
         self.c = pb.connect(pb.DIRECT)
         self.bodies: dict[str, int] = {}
         self.info: dict[str, dict] = {}
+        self._own_boxes: dict[str, tuple[np.ndarray, np.ndarray]] = {}
         for obj in self.scene.get("objects", []):
             self.bodies[obj["name"]] = self._body(obj, scene_path.parent)
             self.info[obj["name"]] = obj
@@ -377,10 +378,26 @@ class Replay:
             ring = np.stack([r * np.cos(t), r * np.sin(t)], 1)
             pts = np.concatenate([np.c_[ring, np.full(72, z)] for z in (-h / 2, h / 2)])
         else:
-            lo, hi = pb.getAABB(body, physicsClientId=self.c)
-            return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
-                             for z in (lo[2], hi[2])])
+            # A mesh's or URDF's box in its own frame (the docs' footprint of a mesh),
+            # turned with it: the world AABB of a turned mesh is wider than the mesh,
+            # and read in a turned support's frame its corners stuck out (blind34 p04:
+            # an octagonal nut 2 deg off its plate, "sticks out by 22.5 mm").
+            lo, hi = self._own_box(name)
+            pts = np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1])
+                            for z in (lo[2], hi[2])])
         return pts @ m[:3, :3].T + m[:3, 3]
+
+    def _own_box(self, name: str) -> tuple[np.ndarray, np.ndarray]:
+        """PyBullet's AABB of the body's base at the origin, unturned (cached)."""
+        if name not in self._own_boxes:
+            body = self.bodies[name]
+            pos, orn = pb.getBasePositionAndOrientation(body, physicsClientId=self.c)
+            pb.resetBasePositionAndOrientation(body, (0, 0, 0), (0, 0, 0, 1),
+                                               physicsClientId=self.c)
+            lo, hi = pb.getAABB(body, physicsClientId=self.c)
+            pb.resetBasePositionAndOrientation(body, pos, orn, physicsClientId=self.c)
+            self._own_boxes[name] = (np.array(lo), np.array(hi))
+        return self._own_boxes[name]
 
     def footprint(self, name: str) -> tuple[np.ndarray, float]:
         """xy points whose hull is the body's projection, and its bottom z."""

@@ -233,3 +233,34 @@ def test_a_finger_the_urdf_makes_mimic_a_given_one_follows_it():
             pytest.approx(0.026)
     finally:
         replay.close()
+
+
+def test_a_turned_mesh_has_its_own_box_for_footprint_not_the_world_aabb():
+    """blind34 p04: the octagonal nut (a mesh, 4.4 cm across its flats) set on a
+    5.2 cm plate turned 35 deg, 2 deg off the plate: its footprint is its own box
+    turned with it, inside the plate; the world AABB of the turned mesh read in the
+    plate's frame stuck out by 22.5 mm."""
+    scene = ROOT / "problems" / "blind34" / "p04" / "p04.scene.toml"
+    rp = Replay(scene)
+    try:
+        plate = rp.bodies["plate-c"]
+        (px, py, pz), _ = pb.getBasePositionAndOrientation(plate, physicsClientId=rp.c)
+        nut = rp.bodies["nut"]
+        (_, _, z), _ = pb.getBasePositionAndOrientation(nut, physicsClientId=rp.c)
+        yaw = math.radians(37.0)
+        pb.resetBasePositionAndOrientation(nut, (px, py, pz + 0.004 + 0.025),
+                                           pb.getQuaternionFromEuler((0, 0, yaw)),
+                                           physicsClientId=rp.c)
+        pts, _ = rp.footprint("nut")
+        frame, half, _ = rp.top_face("plate-c")
+        local = (pts - frame[:2, 3]) @ frame[:2, :2]
+        assert float((abs(local) - half).max()) < 0.0
+        # Its own box: about 4.8 cm a side (4.4 cm and PyBullet's margins), turned.
+        span = pts.max(0) - pts.min(0)
+        side = 0.048
+        expected = side * (abs(math.cos(yaw)) + abs(math.sin(yaw)))
+        assert span == pytest.approx([expected, expected], abs=2e-3)
+        # ... and the goal reads so.
+        assert goal_failures(rp, ["at", "nut", "plate-c"], ["nut"]) == []
+    finally:
+        rp.close()
