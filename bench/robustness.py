@@ -234,6 +234,11 @@ BLIND33 = {"p01": ("a regrasp: the start walls the block's ends, the goal its fa
            "p04": ("a one-object goal of 8 actions, a mesh blocker (KUKA)", 8),
            "p05": ("a cubby opening away from the robot, its mouth plugged (Panda)", 4),
            "p06": ("a dead-end channel whose order the slots decide (Panda)", 6)}
+# problems/blind35: limits as twins; the unsolvable ones (p02, p04, p06) are proved so in
+# tests/bnb/test_edge_twins.py.
+BLIND35 = {"p01": ("a case 8.1 cm wide, just within the xArm6's 8.19 cm", 4),
+           "p03": ("a bar onto a pad it fits only along the diagonal (KUKA)", 4),
+           "p05": ("a push 24 deg off the face's normal, within the cone (planar)", 3)}
 BLIND34 = {"p01": ("a tower of two under a low hood, the pieces chosen by shape (Panda)", 4),
            "p02": ("a 3-cycle of three kinds into exact-fit regions (planar)", 5),
            "p03": ("a crate unloaded, pushed twice, reloaded (KUKA)", 10),
@@ -268,6 +273,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind30", BLIND30), ("blind31", BLIND31), ("blind32", BLIND32),
             ("blind33", BLIND33),
             ("blind34", BLIND34),
+            ("blind35", BLIND35),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

@@ -384,8 +384,10 @@ class _Search(StageSteps):
         if stop == "exhausted" and (self.rank == 0 or self.all_proved_infeasible):
             status = "unsolvable"
         proofs = getattr(self.skeletons, "proofs", 0)
+        named = getattr(self.skeletons, "proof_names", None)
         ending = Ending(stop, self.rank, status == "unsolvable", tuple(self.learned_prefixes),
-                        getattr(self.skeletons, "scope", None), proofs)
+                        getattr(self.skeletons, "scope", None), proofs,
+                        named() if named is not None else ())
         reason = explain(ending, self.failures, self.deepest_feasible, self.options,
                          self.diagnose)
         return BnBResult(status, reason, None, (), None, None, proved_lb, False, self.records,

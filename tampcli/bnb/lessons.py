@@ -69,7 +69,8 @@ def _off_every_cone(task, modes, scene, infos, options) -> frozenset[Blocker]:
             judged[key] = KINDS[mode.kind].within_cone and \
                 first_push_blocked(infos[obj], regions[to], options.waypoints)
         if judged[key]:
-            found.add(Blocker(obj, op.name))
+            found.add(Blocker(obj, op.name, f"no face's friction cone leads from {obj}'s "
+                                            f"start into {to}"))
     return frozenset(found)
 
 
@@ -87,8 +88,11 @@ def _out_of_reach(task, modes, infos, ball) -> frozenset[Blocker]:
         info = infos.get(mode.bind(op.args).get("object"))
         if info is None:
             continue
-        if float(np.linalg.norm(np.asarray(info.pose[:3]) - centre)) > reach + info.sphere:
-            found.add(Blocker(mode.bind(op.args)["object"], op.name))
+        far = float(np.linalg.norm(np.asarray(info.pose[:3]) - centre))
+        if far > reach + info.sphere:
+            obj = mode.bind(op.args)["object"]
+            found.add(Blocker(obj, op.name, f"{obj} stands {far:.2f} m from the arm's "
+                                            f"reach centre, beyond its {reach:.2f} m"))
     return frozenset(found)
 
 
@@ -222,7 +226,7 @@ def named_lessons(source) -> dict[str, list[str]]:
     (blind22: the counts alone left a user guessing which body the search came to
     move first)."""
     def words(found):
-        return sorted(f"{b.body} moved before {b.action}" for b in found)
+        return sorted(b.words() for b in found)
 
     return {"learned": words(source.blockers), "proved_first_moves": words(source.proved),
             "suspected": sorted(source.suspects)}

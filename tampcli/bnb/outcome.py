@@ -60,6 +60,7 @@ class Ending:
     learned_prefixes: tuple[tuple[str, ...], ...] = ()
     scope: str | None = None  # which skeletons the source yields, in words
     proofs: int = 0  # geometric proofs compiled into the task before any skeleton
+    proof_names: tuple[str, ...] = ()  # those proofs in words (with their causes)
 
 
 SHOWN = 3  # failures (and learned prefixes) named in the reason
@@ -73,9 +74,13 @@ def explain(ending: Ending, failures: list[Failure], deepest_feasible, options,
     if ending.tried == 0 and ending.proofs:
         # Not the symbols' doing (blind28 p06: `plan` found the plan in 1 ms; a false
         # reach proof had ruled out its first pick).
+        named = "; ".join(ending.proof_names[:SHOWN]) + (
+            f"; and {len(ending.proof_names) - SHOWN} more" if len(ending.proof_names) > SHOWN
+            else "")
         return (f"no skeleton: every plan breaks one of the {ending.proofs} geometric "
-                "proof(s) made before any skeleton (the 'proved before any skeleton' "
-                "line names them)")
+                "proof(s) made before any skeleton"
+                + (f": {named}" if named else "")
+                + " (`stats.proved_first_moves` lists them)")
     if ending.tried == 0:
         return "no skeleton: the task is symbolically unsolvable"
     parts = [_how(ending, options)]

@@ -65,7 +65,8 @@ def run_skeleton(job: SkeletonJob, ops, evaluate: Evaluate,
 
     def stage(prefix_ops, name, warm, cutoff=None):
         result = call_stage(evaluate, prefix_ops, name, warm, cutoff)
-        counts[0] += getattr(result, "nlp_solves", 1) or 1
+        solves = getattr(result, "nlp_solves", None)  # as StageSteps._stage counts
+        counts[0] += 1 if solves is None else solves
         counts[1] += getattr(result, "iterations", 0) or 0
         return result
 

@@ -26,7 +26,10 @@ class StageSteps:
     def _stage(self, ops, stage: str, warm, cutoff: float | None = None):
         t0 = self.clock()
         result = call_stage(self.evaluate, ops, stage, warm, cutoff)
-        self.stats["nlp_solves"] += getattr(result, "nlp_solves", 1) or 1
+        # A stage refused before any NLP (a proof) solved none (blind35 DOC_GAPS 6: such
+        # a refusal counted one); an evaluator that does not say counts one.
+        solves = getattr(result, "nlp_solves", None)
+        self.stats["nlp_solves"] += 1 if solves is None else solves
         self.stats["nlp_iterations"] += getattr(result, "iterations", 0) or 0
         self.stats["optimize_seconds"] += self.clock() - t0
         return result

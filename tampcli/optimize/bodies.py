@@ -13,6 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from tampcli.geometry import transforms
+from tampcli.optimize.units import cm
 
 # Resting contact tolerance (docs/formats.md, "Resting contact"): bottom to top face.
 REST_TOLERANCE = 0.005
@@ -143,8 +144,8 @@ def region_misfit(obj: str, info: BodyInfo, region) -> str | None:
     a, b = 2 * info.half[0], 2 * info.half[1]
     if rectangle_fits(a, b, w, h):
         return None
-    return (f"{obj} ({100 * a:.1f} x {100 * b:.1f} cm) does not fit region {region.name} "
-            f"({100 * w:.1f} x {100 * h:.1f} cm) at any yaw")
+    return (f"{obj} ({cm(a)} x {cm(b)} cm) does not fit region {region.name} "
+            f"({cm(w)} x {cm(h)} cm) at any yaw")
 
 
 def face_misfit(obj: str, info: BodyInfo, support: BodyInfo, overhang: float) -> str | None:
@@ -165,8 +166,8 @@ def face_misfit(obj: str, info: BodyInfo, support: BodyInfo, overhang: float) ->
         return None
 
     def size(b: BodyInfo) -> str:
-        return (f"{100 * 2 * b.half[0]:.1f} cm across" if b.disk
-                else f"{100 * 2 * b.half[0]:.1f} x {100 * 2 * b.half[1]:.1f} cm")
+        return (f"{cm(2 * b.half[0])} cm across" if b.disk
+                else f"{cm(2 * b.half[0])} x {cm(2 * b.half[1])} cm")
 
     return (f"{obj} ({size(info)}) does not fit on the top of {support.name} "
             f"({size(support)}) at any yaw")

@@ -19,6 +19,7 @@ import numpy as np
 from tampcli.optimize.bodies import REST_TOLERANCE
 from tampcli.optimize.expr import Label
 from tampcli.optimize.grips import Grip, PitchGrip, TopGrip
+from tampcli.optimize.units import cm
 from tampcli.optimize.values import GripChoice
 
 GRIPPER_SLACK = 0.005  # m: an object this much narrower than the opening fits between
@@ -65,9 +66,9 @@ class GraspFamily(ABC):
         """Why the gripper cannot hold this shape this way (None: it can)."""
         if not self.choices(info, opening):
             narrow = min(closing_width(info, psi) for psi in QUARTERS)
-            return (f"{100 * narrow:.1f} cm wide; the gripper opens "
-                    f"{100 * opening:.1f} cm and takes at most "
-                    f"{100 * (opening - GRIPPER_SLACK):.1f} cm")
+            return (f"{cm(narrow)} cm wide; the gripper opens "
+                    f"{cm(opening)} cm and takes at most "
+                    f"{cm(opening - GRIPPER_SLACK)} cm")
         return None
 
     @abstractmethod

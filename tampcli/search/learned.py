@@ -235,6 +235,11 @@ class LearningSource:
                       f"{' ...' if len(gone) > 3 else ''})")
         return words
 
+    def proof_names(self) -> tuple[str, ...]:
+        """The proofs `proofs` counts, in words: each with what proves it where known."""
+        return tuple(sorted(b.words() for b in self.proved)) + tuple(
+            f"{name} is impossible in any skeleton" for name in sorted(self.impossible))
+
     @property
     def proofs(self) -> int:
         """Geometric proofs compiled into the task: preconditions proved for every

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from tampcli.task.task import Operator, Task
 
@@ -20,10 +20,16 @@ PROVED = "(tampcli-moved-first {})"  # the fact a proved precondition asks for (
 
 @dataclass(frozen=True)
 class Blocker:
-    """`body`, where it stood, blocked the ground action `action` (its name)."""
+    """`body`, where it stood, blocked the ground action `action` (its name); `why`,
+    for a proof, what proves it (not part of its identity)."""
 
     body: str
     action: str
+    why: str = field(default="", compare=False)
+
+    def words(self) -> str:
+        return f"{self.body} moved before {self.action}" + (f" ({self.why})" if self.why
+                                                              else "")
 
 
 def compile_task(task: Task, blockers: frozenset[Blocker],

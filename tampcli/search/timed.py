@@ -21,6 +21,10 @@ class TimedSource:
     def proofs(self) -> int:
         return getattr(self.topk, "proofs", 0)
 
+    def proof_names(self) -> tuple[str, ...]:
+        named = getattr(self.topk, "proof_names", None)
+        return named() if named is not None else ()
+
     def forbid_prefix(self, names):
         self.topk.forbid_prefix(names)
 

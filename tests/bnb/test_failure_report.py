@@ -2,6 +2,7 @@
 point by action (not only the worst), and whether the skeletons left were excluded by a
 heuristic (prefixes forbidden after a local failure) rather than tried."""
 
+import dataclasses
 import time
 from pathlib import Path
 
@@ -188,3 +189,32 @@ def test_no_skeleton_left_by_the_proofs_is_not_called_symbolically_unsolvable(tm
     assert "symbolically" not in solution.reason
     assert "geometric proof(s) made before any skeleton" in solution.reason
     assert len(solution.skeletons) == 0
+
+
+def test_a_search_ended_by_proofs_names_them_and_what_proves_each():
+    """blind35 DOC_GAPS 5: the reason said only how many proofs there were."""
+    from tampcli.bnb.outcome import Ending, explain
+
+    cone = ("crate moved before (push crate home dock) (no face's friction cone leads "
+            "from crate's start into dock)")
+    reason = explain(Ending("exhausted", 0, True, proofs=1, proof_names=(cone,)), [], (),
+                     BnBOptions())
+    assert reason.startswith("no skeleton: every plan breaks one of the 1 geometric proof(s)")
+    assert cone in reason
+
+
+def test_a_stage_refused_before_any_nlp_counts_no_nlp_solve():
+    """blind35 DOC_GAPS 6: a final stage proved infeasible before any NLP counted one."""
+    @dataclasses.dataclass(frozen=True)
+    class Proved(R):
+        nlp_solves: int = 0
+
+    src = Source([(("a",), 1)])
+    ev = table_evaluator({(("a",), "final"): Proved("infeasible", worst_constraint="far",
+                                                    proved=True)})
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert res.status == "unsolvable" and res.stats["nlp_solves"] == 0
+    # An evaluator that does not say how many it solved counts one a stage.
+    ev = table_evaluator({(("a",), "final"): R("infeasible", worst_constraint="far",
+                                               proved=True)})
+    assert branch_and_bound(Source([(("a",), 1)]), ev, BnBOptions()).stats["nlp_solves"] == 1

@@ -22,6 +22,7 @@ from tampcli.optimize.modes import load_modes
 from tampcli.optimize.problem import lower
 from tampcli.optimize.solve import solve
 from tampcli.optimize.stages import keyframe_layout, keyframe_rows
+from tampcli.optimize.units import cm
 from tampcli.optimize.verify import verify
 from tampcli.pddl import parser
 
@@ -247,3 +248,13 @@ def test_other_arms_grasp_from_the_side(tmp_path, arm, name, plan):
         assert result.solved, result.worst_constraint
         assert result.choices[0].family == "side"
         assert verify(problem, result) == []
+
+
+def test_a_refusal_at_the_edge_gives_the_figures_to_the_fraction_of_a_millimetre():
+    """blind35 DOC_GAPS 1: the xArm6 opens 8.69 cm and takes 8.19; a case 8.195 cm wide
+    was refused as "8.2 cm wide; ... takes at most 8.2 cm"."""
+    ok, why = F.possible(None, _box(0.10, 0.08195, 0.06), 0.0869)
+    assert ok == ()
+    assert "8.195 cm wide; the gripper opens 8.69 cm and takes at most 8.19 cm" in why[0]
+    # Round figures read as before.
+    assert cm(0.09) == "9.0" and cm(0.12) == "12.0" and cm(0.0819) == "8.19"
