@@ -109,8 +109,14 @@ class LearningSource:
     # ------------------------------------------------------------ what bnb tells it
 
     def learn(self, blocker: Blocker, *more: Blocker) -> bool:
-        """Take findings in; True when one is new (the enumeration restarts, once)."""
-        new = frozenset((blocker, *more)) - self.blockers
+        """Take findings in; True when one is new (the enumeration restarts, once). A
+        finding that a skeleton already found feasible contradicts (it does the action
+        with the body not moved before it) is not taken: blind36 p01 learned "block-blue
+        moved before (place block-red bin)" from a failure after #1 had put block-red
+        in the bin beside block-blue, and every plan without that move waited behind
+        the 8-action ones for the rest of the run."""
+        new = frozenset(b for b in (blocker, *more) if not self._contradicted(b)) \
+            - self.blockers
         if not new:
             return False
         self.blockers = self.blockers | new
@@ -152,6 +158,18 @@ class LearningSource:
                 self._plain.forbid_prefix(names)
             if self._learned is not None:
                 self._learned.forbid_prefix(names)
+
+    def _contradicted(self, blocker: Blocker) -> bool:
+        """Whether a skeleton found feasible does `blocker.action` with `blocker.body`
+        not moved by any action before it."""
+        for names in self._solved:
+            if blocker.action not in names:
+                continue
+            before = names[:names.index(blocker.action)]
+            if not any(blocker.body in self._moves(self._by_name[n])
+                       for n in before if n in self._by_name):
+                return True
+        return False
 
     def solved(self, names: tuple[str, ...]) -> None:
         """A skeleton found feasible: its supersequences are not worth an NLP."""

@@ -299,3 +299,18 @@ def test_a_lesson_only_loops_meet_is_given_up_and_the_plain_skeletons_follow(mon
     rest = [p.names for p in src]
     assert src.stats["given_up"] >= 1
     assert [first.names, *rest] == plain  # in the plain task's order, none lost
+
+
+def test_a_finding_a_feasible_skeleton_contradicts_is_not_learned():
+    """blind36 p01: "block-blue moved before (place block-red bin)" was learned after a
+    skeleton had put block-red in the bin with block-blue still there."""
+    task, _ = pen(1)
+    src = source(task)
+    first = next(src)
+    src.solved(first.names)  # (pick a floor) (place a goal), b1 never moved
+    assert not src.learn(Blocker("b1", "(place a goal)"))
+    assert src.blockers == frozenset() and src.stats["learned"] == 0
+    # A skeleton that moved b1 first contradicts nothing: the finding is taken.
+    other = source(task)
+    other.solved(("(pick b1 goal)", "(place b1 floor)", "(pick a floor)", "(place a goal)"))
+    assert other.learn(Blocker("b1", "(place a goal)"))
