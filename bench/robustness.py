@@ -239,6 +239,12 @@ BLIND33 = {"p01": ("a regrasp: the start walls the block's ends, the goal its fa
 BLIND35 = {"p01": ("a case 8.1 cm wide, just within the xArm6's 8.19 cm", 4),
            "p03": ("a bar onto a pad it fits only along the diagonal (KUKA)", 4),
            "p05": ("a push 24 deg off the face's normal, within the cone (planar)", 3)}
+BLIND36 = {"p01": ("one counter: a tidy-up of three things onto two levels and a bin (Panda)", 6),
+           "p02": ("one counter: a three-piece tower, the KUKA at the far end turned", 8),
+           "p03": ("one counter: a carton onto a taken upper-level spot (xArm6 behind)", 4),
+           "p04": ("one counter: emptying a bin, a negative goal (Panda off the edge)", 6),
+           "p05": ("one counter: a half-done goal, a disjunction whose near branch is full", 4),
+           "p06": ("one counter: a swap with action costs (Panda)", 6)}
 BLIND34 = {"p01": ("a tower of two under a low hood, the pieces chosen by shape (Panda)", 4),
            "p02": ("a 3-cycle of three kinds into exact-fit regions (planar)", 5),
            "p03": ("a crate unloaded, pushed twice, reloaded (KUKA)", 10),
@@ -274,6 +280,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind33", BLIND33),
             ("blind34", BLIND34),
             ("blind35", BLIND35),
+            ("blind36", BLIND36),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

@@ -38,7 +38,7 @@ def test_a_useless_trailing_action_goes_when_geometry_agrees():
     result = eliminate_useless(result, table_evaluator({}), drop_tail_pick, 0.1, float("inf"))
     assert [op.name for op in result.best_plan] == ["(pick a)", "(place a)"]
     assert result.stats["actions_eliminated"] == 1
-    assert result.skeletons[-1].reason.startswith("the answer less (pick b)")
+    assert result.skeletons[-1].reason.startswith("the answer (#1) less (pick b) (action")
     assert result.lower_bound <= result.best_objective
 
 
@@ -124,3 +124,19 @@ def test_a_real_prefix_passes_again_on_the_answers_own_motions():
             np.testing.assert_allclose(prefix.keyframes.q[k], warm.keyframes.q[k])
             np.testing.assert_allclose(prefix.motions[k], warm.motions[k], atol=1e-6)
         assert prefix.cost == pytest.approx(sum(warm.phase_costs[:n]), rel=1e-6)
+
+
+def test_the_record_names_every_action_dropped_and_the_answer_it_came_from():
+    """blind36 DOC_GAPS 3: a pick and its place dropped together were named as one."""
+    def drop_pair(ops, i):
+        names = [op.name for op in ops]
+        if names[i] != "(pick b)" or "(place b)" not in names:
+            return None
+        return tuple(op for op in ops if op.name not in ("(pick b)", "(place b)"))
+
+    plan = ("(pick b)", "(place b)", "(pick a)", "(place a)")
+    result = branch_and_bound(source(plan), table_evaluator({}), BnBOptions())
+    result = eliminate_useless(result, table_evaluator({}), drop_pair, 0.1, float("inf"))
+    assert [op.name for op in result.best_plan] == ["(pick a)", "(place a)"]
+    assert result.skeletons[-1].reason.startswith(
+        "the answer (#1) less (pick b) (place b) (action elimination")
