@@ -134,6 +134,17 @@ class StageSteps:
             self.stats["prefixes_forbidden"] += 1
             self.learned_prefixes.append(prefix)
             trial.reason += f" (prefix {' '.join(prefix)} failed)"
+        if stage != "path" and getattr(result, "proved", False) and failed is not None \
+                and result.status == "infeasible" and hasattr(self.skeletons, "forbid_prefix"):
+            # A proof made while lowering (`(pick plate home): plate is under another
+            # object`) comes from the actions up to the one it names: every skeleton
+            # starting with them fails it too (blind37 p02: 35 such refusals one by one
+            # before the answer, at #38). A proof, not a heuristic: the bound stays.
+            prefix = trial.names[:failed]
+            self.skeletons.forbid_prefix(prefix)
+            self.stats["prefixes_forbidden"] += 1
+            trial.reason += f" (prefix {' '.join(prefix)} is proved infeasible)"
+            return
         if stage == "keyframes" and self.options.prefix_pruning \
                 and result.status == "infeasible":
             prefix = shortest_failing_prefix(trial.ops, trial.names, self.tree, self._stage,

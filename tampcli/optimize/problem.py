@@ -36,6 +36,9 @@ class TrajectoryProblem:
     planar: bool = False
     error: str | None = None  # the skeleton cannot be lowered (infeasible)
     error_proved: bool = True  # ... and that is a proof (not a mesh's bounding box's)
+    # The action the lowering stopped at (its index): what makes it fail comes from it
+    # and the actions before it alone, so a proof holds for every skeleton starting so.
+    error_at: int | None = None
     # (action schema, object, role or None) of an ImpossibleAction: the error holds for
     # every skeleton
     impossible: tuple | None = None
@@ -81,6 +84,7 @@ def lower(skeleton, scene, modes, world, options: OptimizeOptions | None = None,
                 options=options, planar=planar, checker=checker)
     lo = Lowering(infos, supports, {r.name: r for r in scene.regions}, planar, domain,
                   None if planar else world.gripper_opening)
+    i = 0
     try:
         for i, op in enumerate(skeleton):
             mode = mode_of(modes, op.action)
@@ -92,7 +96,8 @@ def lower(skeleton, scene, modes, world, options: OptimizeOptions | None = None,
         impossible = (err.action, err.obj, err.role) if isinstance(err, ImpossibleAction) \
             else None
         return TrajectoryProblem(steps=(), motions=(), error=str(err), impossible=impossible,
-                                 error_proved=err.proved, hand=open_hand(world), **base)
+                                 error_proved=err.proved, error_at=i, hand=open_hand(world),
+                                 **base)
     return TrajectoryProblem(steps=tuple(lo.steps), motions=tuple(lo.motions),
                              grip_params=tuple(lo.grip_params), hand=open_hand(world), **base)
 

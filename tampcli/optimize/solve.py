@@ -43,7 +43,9 @@ def solve(problem: TrajectoryProblem, stage: str, warm: TrajectoryResult | None 
         proved = problem.error_proved
         return run.result("infeasible", worst_constraint=problem.error, proved=proved,
                           bound_kind="proved" if proved else "heuristic", violation=math.inf,
-                          impossible=problem.impossible)
+                          impossible=problem.impossible,
+                          failed_actions=None if problem.error_at is None
+                          else problem.error_at + 1)
     try:
         if stage == "final":
             return final(run)

@@ -218,3 +218,18 @@ def test_a_stage_refused_before_any_nlp_counts_no_nlp_solve():
     ev = table_evaluator({(("a",), "final"): R("infeasible", worst_constraint="far",
                                                proved=True)})
     assert branch_and_bound(Source([(("a",), 1)]), ev, BnBOptions()).stats["nlp_solves"] == 1
+
+
+def test_a_proof_made_while_lowering_forbids_its_prefix_and_keeps_the_bound():
+    """blind37 p02: `(pick plate home): plate is under another object`, proved from the
+    actions up to the pick alone, was refuted again in 35 skeletons starting so."""
+    src = Source([(("x", "y", "z"), 3), (("x", "y", "w"), 4), (("v",), 5)])
+    ev = table_evaluator({(("x", "y", "z"), "final"): R(
+        "infeasible", worst_constraint="y: plate is under another object", proved=True,
+        failed_actions=2)})
+    res = branch_and_bound(src, ev, BnBOptions())
+    assert ("x", "y", "w") not in src.drawn
+    assert res.stats["prefixes_forbidden"] == 1
+    first = next(r for r in res.skeletons if r.plan == ("x", "y", "z"))
+    assert first.reason.endswith("(prefix x y is proved infeasible)")
+    assert res.status == "solved" and res.best_plan[0].name == "v"
