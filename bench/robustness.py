@@ -245,6 +245,12 @@ BLIND36 = {"p01": ("one counter: a tidy-up of three things onto two levels and a
            "p04": ("one counter: emptying a bin, a negative goal (Panda off the edge)", 6),
            "p05": ("one counter: a half-done goal, a disjunction whose near branch is full", 4),
            "p06": ("one counter: a swap with action costs (Panda)", 6)}
+BLIND37 = {"p01": ("a tower of mixed shapes, its top piece on its base (Panda), STRIPS", 8),
+           "p02": ("the same tower, typed, no occupancy, action costs", 8),
+           "p03": ("the same tower, derived predicates, exists goal, place on a body", 8),
+           "p04": ("a dead-end bay emptied through a door (planar), STRIPS slots", 6),
+           "p05": ("the same bay, typed, no occupancy, action costs", 6),
+           "p06": ("the same bay, a move through the door, derived, forall goal", 11)}
 BLIND34 = {"p01": ("a tower of two under a low hood, the pieces chosen by shape (Panda)", 4),
            "p02": ("a 3-cycle of three kinds into exact-fit regions (planar)", 5),
            "p03": ("a crate unloaded, pushed twice, reloaded (KUKA)", 10),
@@ -281,6 +287,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind34", BLIND34),
             ("blind35", BLIND35),
             ("blind36", BLIND36),
+            ("blind37", BLIND37),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]
