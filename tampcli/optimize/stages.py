@@ -186,8 +186,9 @@ class KeyframeWalk:
     """The keyframe NLP's walk: resting poses, what is held, pending collision queries."""
 
     def __init__(self, problem: TrajectoryProblem, vals: dict, choices: dict, tool_frames,
-                 collisions: bool, anchors: dict | None = None):
+                 collisions: bool, anchors: dict | None = None, supports: bool = False):
         self.problem = problem
+        self.support_rows = supports  # `collide`'s rows between the arm and a place's support
         self.anchors = anchors or {}  # step index -> ((x, y), radius) its placement keeps to
         self.planar = problem.planar
         self.vals = vals
@@ -224,15 +225,17 @@ class KeyframeWalk:
 
     def collide(self, k, step, held, frame, ignore) -> None:
         """The keyframe's collision rows, queried after the walk; `ignore`: the bodies
-        it has no rows for. Where an arm sets an object down, its support is left out
-        of the object's rows only (it rests on it): the arm's links keep the tight
-        margin from it (blind34 p01: a low put-down under a hood solved with the
-        forearm 2.2 cm inside the table, which only the path stage's check found)."""
+        it has no rows for. Where an arm sets an object down its support is left out
+        (the object rests on it); with `supports`, out of the object's rows only, the
+        arm's links keeping the tight margin from it (keyframe_stage.keyframes_with
+        asks for them where a solved keyframe's links went into a support: blind34
+        p01, a low put-down under a hood solved with the forearm 2.2 cm inside the
+        table, which only the path stage's check found)."""
         if self.collisions:
             moved = {n: P for n, P in self.state.items() if P.jac}
-            support = step.support if (step.kind.places and held is not None
-                                        and not self.planar and step.support in ignore) \
-                else None
+            support = step.support if (self.support_rows and step.kind.places
+                                        and held is not None and not self.planar
+                                        and step.support in ignore) else None
             if support is not None:
                 ignore = set(ignore) - {support}
             self.pending.append((k, step.name, held, frame, frozenset(ignore), moved,
@@ -254,8 +257,8 @@ class KeyframeWalk:
 
 
 def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, checker,
-                  start: np.ndarray, collisions: bool = True, anchors: dict | None = None
-                  ) -> Rows:
+                  start: np.ndarray, collisions: bool = True, anchors: dict | None = None,
+                  supports: bool = False) -> Rows:
     """`anchors`: step index -> ((x, y), radius): placements kept near a spot
     (optimize/relocate: clear of a later motion)."""
     opts = problem.options
@@ -266,7 +269,7 @@ def keyframe_rows(problem: TrajectoryProblem, vals: dict, choices: dict, kin, ch
 
     # The tool frames of all keyframes at once (one batched forward kinematics).
     tool_frames = kin.frames([q_of(k) for k in range(problem.n_keyframes)])
-    walk = KeyframeWalk(problem, vals, choices, tool_frames, collisions, anchors)
+    walk = KeyframeWalk(problem, vals, choices, tool_frames, collisions, anchors, supports)
     for step in problem.steps:
         step.kind.keyframe_rows(walk, step)
     rows, pending = walk.rows, walk.pending

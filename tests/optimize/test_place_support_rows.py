@@ -1,6 +1,8 @@
-"""Where an arm sets an object down, only the object is exempt from its support: the
-arm's links keep the tight margin from it (stages.KeyframeWalk.collide). blind34 p01:
-the block put down under a low hood, its keyframe solved with the Panda's forearm
+"""Where an arm sets an object down, the keyframe NLP leaves the support out of its
+rows (the object rests on it); where a solved keyframe's link then went into the
+support, the NLP is solved again with the rows between the arm and the support
+(keyframe_stage._into_support, _with_supports; stages.KeyframeWalk.collide). blind34
+p01: the block put down under a low hood, its keyframe solved with the Panda's forearm
 2.2 cm inside the table, which only the path stage's check found."""
 
 from __future__ import annotations
@@ -48,7 +50,11 @@ def test_the_put_downs_rows_name_the_table_for_the_links_not_for_the_block(hood)
     run, kf = hood
     problem = run.problem
     rows = keyframe_rows(problem, kf.keyframes.blocks(), kf.choices, run.kin, run.checker,
-                         run.start)
+                         run.start, supports=True)
+    plain = keyframe_rows(problem, kf.keyframes.blocks(), kf.choices, run.kin, run.checker,
+                          run.start)
+    assert not any(lab.step == "(put-down block pad)" and "vs table" in lab.what
+                   for lab in plain.ineq.labels)  # only asked for where needed
     rows_at = [lab.what for lab in rows.ineq.labels if lab.step == "(put-down block pad)"]
     table = [what for what in rows_at if what.endswith("vs table (margin 1 mm)")]
     # The forearm, 1 mm over the table there, has its row; the block resting on the
