@@ -16,6 +16,7 @@ from tampcli.optimize.final_starts import starts
 from tampcli.optimize.grips import SideGrip
 from tampcli.optimize.hand import narrows, with_hand
 from tampcli.optimize.init import keyframe_guess
+from tampcli.optimize.keyframe_supports import into_support, with_supports
 from tampcli.optimize.layout import grip_block, keyframe_block
 from tampcli.optimize.nlp import FEASIBILITY
 from tampcli.optimize.result import TrajectoryResult
@@ -292,9 +293,9 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
         tight = retries
     if out.status != "solved" and collisions and tight and time.perf_counter() < run.deadline:
         out = _tight_keyframes(run, layout, bounds, out, choices, at, checker)
-    if out.status == "solved" and collisions and _into_support(run, layout, out, choices, at,
-                                                               checker):
-        out = _with_supports(run, layout, bounds, out, choices, at, checker)
+    if out.status == "solved" and collisions and into_support(run, layout, out, choices, at,
+                                                              checker):
+        out = with_supports(run, layout, bounds, out, choices, at, checker)
     kf = Keyframes.from_blocks(layout.unpack(out.x), problem.n_keyframes, problem.grip_params)
     T = problem.options.waypoints
     phase_costs = kf.least_costs(run.start, T)
@@ -313,45 +314,6 @@ def keyframes_with(run: Run, warm, grips: dict[int, float] | None = None,
     return run.result("solved", cost=out.cost, phase_costs=phase_costs,
                       violation=out.violation,
                       kkt=KktStages(final_kkt, out.kkt if collisions else None), **common)
-
-
-def _into_support(run: Run, layout, out, choices, at, checker) -> bool:
-    """Whether, at the solved keyframes `out`, an arm's link is nearer than the tight
-    margin (less FEASIBILITY) to the support a place sets its object down on: the
-    keyframe NLP leaves a place's support out of its rows (the object rests on it),
-    and a link can go through it unseen (blind34 p01). One evaluation of the rows
-    with the supports in (stages.KeyframeWalk.collide)."""
-    supports = {s.name: s.support for s in at.steps if s.kind.places and s.support}
-    if at.planar or not supports:
-        return False
-    rows = keyframe_rows(at, layout.unpack(out.x), choices, run.kin, checker, run.start,
-                         anchors=run.anchors, supports=True)
-    values = np.concatenate(rows.ineq.values) if rows.ineq.values else np.zeros(0)
-    return any(value < -FEASIBILITY and label.step in supports
-               and f" vs {supports[label.step]} (" in label.what
-               for label, value in zip(rows.ineq.labels, values, strict=True))
-
-
-def _with_supports(run: Run, layout, bounds, out, choices, at, checker):
-    """The keyframe NLP again from `out` with the rows between the arm and the places'
-    supports (the tight margin), at the margin, then at the tight margin; the last
-    outcome where neither solves: the keyframes went through a support, a failure.
-    Only where needed (`_into_support`): with those rows in every keyframe NLP, the
-    answers of tight racks moved a little, and two lost `validate --physics`
-    (blind27 p06, blind31 p01)."""
-    again = out
-    for margin in dict.fromkeys((at.options.margin, at.options.tight_margin)):
-        problem = dataclasses.replace(at, options=dataclasses.replace(at.options,
-                                                                      margin=margin))
-
-        def evaluate(x, problem=problem):
-            return keyframe_rows(problem, layout.unpack(x), choices, run.kin, checker,
-                                 run.start, anchors=run.anchors, supports=True)
-
-        again = run.nlp(evaluate, layout, out.x, bounds)
-        if again.status == "solved" or time.perf_counter() > run.deadline:
-            return again
-    return again
 
 
 def _tight_keyframes(run: Run, layout, bounds, out, choices, at, checker):

@@ -1,7 +1,7 @@
 """Where an arm sets an object down, the keyframe NLP leaves the support out of its
 rows (the object rests on it); where a solved keyframe's link then went into the
 support, the NLP is solved again with the rows between the arm and the support
-(keyframe_stage._into_support, _with_supports; stages.KeyframeWalk.collide). blind34
+(keyframe_supports.into_support, with_supports; stages.KeyframeWalk.collide). blind34
 p01: the block put down under a low hood, its keyframe solved with the Panda's forearm
 2.2 cm inside the table, which only the path stage's check found."""
 
