@@ -251,6 +251,12 @@ BLIND37 = {"p01": ("a tower of mixed shapes, its top piece on its base (Panda), 
            "p04": ("a dead-end bay emptied through a door (planar), STRIPS slots", 6),
            "p05": ("the same bay, typed, no occupancy, action costs", 6),
            "p06": ("the same bay, a move through the door, derived, forall goal", 11)}
+BLIND38 = {"p01": ("a cube onto a pad a blocker stands on (Panda; the fixed version)", 4),
+           "p02": ("Sussman's anomaly with table spots (KUKA)", 6),
+           "p03": ("a case over a scan window onto a raised dock (xArm6)", 3),
+           "p04": ("a shove-only crate into a dock a puck lies in (planar)", 3),
+           "p05": ("a swap via a buffer, the base turned 90 deg (Panda)", 6),
+           "p06": ("two pucks through a door, a forall goal (planar)", 4)}
 BLIND34 = {"p01": ("a tower of two under a low hood, the pieces chosen by shape (Panda)", 4),
            "p02": ("a 3-cycle of three kinds into exact-fit regions (planar)", 5),
            "p03": ("a crate unloaded, pushed twice, reloaded (KUKA)", 10),
@@ -288,6 +294,7 @@ def problems() -> list[tuple[str, str, str, int]]:
             ("blind35", BLIND35),
             ("blind36", BLIND36),
             ("blind37", BLIND37),
+            ("blind38", BLIND38),
             ("gen1", GEN1))
     rows += [(folder, stem, cls, n) for folder, table in sets
              for stem, (cls, n) in sorted(table.items())]

@@ -5,6 +5,7 @@ grasp families' figures). Not errors: `check` still exits 0."""
 from __future__ import annotations
 
 from tampcli.optimize.options import OptimizeOptions
+from tampcli.optimize.units import cm
 
 
 def scene_warnings(scene: dict) -> list[str]:
@@ -44,6 +45,10 @@ def _ungraspable(scene: dict) -> list[str]:
     if opening is None or not grasps:
         return []
     least = depth + F.MIN_DEPTH + OptimizeOptions().tight_margin
+    pushes = any(k in KINDS and KINDS[k].within_cone
+                 for k in scene.get("action_modes", {}).values())
+    # blind38 DOC_GAPS 5: "only a push can move it" where the domain has no push.
+    only = "only a push can move it" if pushes else "no action of the domain can move it"
     out = []
     for body in scene["bodies"]:
         size, shape = body["size"], body["shape"]
@@ -54,12 +59,11 @@ def _ungraspable(scene: dict) -> list[str]:
         name, model = body["name"], robot["model"]
         if not F.fits(across, opening):
             out.append(f"{name} is {100 * across:.1f} cm across at its narrowest: wider than "
-                       f"the {model}'s gripper takes ({100 * (opening - F.GRIPPER_SLACK):.1f} "
-                       "cm); only a push can move it")
+                       f"the {model}'s gripper takes ({cm(opening - F.GRIPPER_SLACK)} cm); "
+                       f"{only}")
         elif tall < least and tall < F.SIDE_MIN_HEIGHT:
             out.append(f"{name} is {100 * tall:.1f} cm tall: lower than any grasp of the "
                        f"{model} takes (from the top {100 * least:.2f} cm and up, its "
                        f"fingertips reaching {100 * depth:.1f} cm beyond the tool origin; "
-                       f"from the side {100 * F.SIDE_MIN_HEIGHT:.0f} cm); only a push can "
-                       "move it")
+                       f"from the side {100 * F.SIDE_MIN_HEIGHT:.0f} cm); {only}")
     return out

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import difflib
 import math
 from pathlib import Path
 
@@ -69,8 +70,11 @@ def build_scene(src: TomlSource) -> Scene:
                             "regions.name")
         seen[r.name] = i
         if r.on not in {b.name for b in bodies}:
-            raise src.error(f"region {r.name!r} is on {r.on!r}, which is no object of the scene",
-                            "regions", i, "on", "regions.on")
+            near = difflib.get_close_matches(r.on, [b.name for b in bodies], n=1)
+            hint = f" (did you mean {near[0]!r}?)" if near else \
+                f" (its objects: {', '.join(b.name for b in bodies)})"
+            raise src.error(f"region {r.name!r} is on {r.on!r}, which is no object of the "
+                            f"scene{hint}", "regions", i, "on", "regions.on")
         support = next(b for b in bodies if b.name == r.on)
         if support.shape not in ("box", "cylinder"):
             raise src.error(f"region {r.name!r} must lie on a box or cylinder, {r.on!r} is a "
