@@ -16,7 +16,6 @@ a callable (`branch_and_bound(diagnose=...)`, from the pipeline).
 
 from __future__ import annotations
 
-import dataclasses
 from dataclasses import dataclass
 
 import numpy as np
@@ -52,7 +51,7 @@ def violated_rows(problem, result: TrajectoryResult, kin: Kinematics) -> tuple[V
     start = np.asarray(problem.world.start, dtype=float)
     best: tuple[float, tuple[Violation, ...]] | None = None
     for margin in dict.fromkeys((options.margin, options.tight_margin)):
-        at = dataclasses.replace(problem, options=dataclasses.replace(options, margin=margin))
+        at = problem.at_margin(margin)
         rows = keyframe_rows(at, vals, result.choices, kin, problem.checker, start)
         found = _violations(rows)
         worst = found[0].amount if found else 0.0

@@ -146,6 +146,34 @@ def _rungs(problem, q_b, tool, rest, height: float, held: Held, moved, ignore,
     return Approach(tuple(targets), tuple(qs))
 
 
+def axis_rungs(problem, q, direction, step: float, count: int, held: Held | None, moved,
+               ignore, clear: float, checker, stop=None, limits: bool = False
+               ) -> tuple[list[np.ndarray], list[np.ndarray]]:
+    """(targets, configurations) of keyframe q's tool moved `step` * j along `direction`
+    (world, unit), its orientation kept, j = 1 .. `count`: each by IK seeded by the one
+    before, `rung_clear` from it; the first that fails ends them, those before kept.
+    `stop(q)` True ends them after the rung q; with `limits`, a rung outside the
+    joint limits fails too (retreat.backoff, axial_start)."""
+    world = problem.world
+    tool = world.tool_pose(np.asarray(q, dtype=float))
+    targets, qs, seed = [], [], np.asarray(q, dtype=float)
+    for j in range(1, count + 1):
+        target = tool.copy()
+        target[:3, 3] += np.asarray(direction) * (step * j)
+        rung, residual = world.ik(target, seed=seed, restarts=0)
+        rung = np.asarray(rung, dtype=float)
+        if residual > IK_TOLERANCE or (limits and (np.any(rung < world.lower)
+                                                   or np.any(rung > world.upper))) \
+                or not rung_clear(problem, seed, rung, held, moved, ignore, clear, checker):
+            break
+        targets.append(target)
+        qs.append(rung)
+        seed = rung
+        if stop is not None and stop(rung):
+            break
+    return targets, qs
+
+
 def rung_clear(problem, prev, q, held: Held | None, moved, ignore, clear: float,
                checker=None) -> bool:
     """Whether the rung q, and CHECKS points on the segment to it from `prev`, are

@@ -14,8 +14,8 @@ Each end backs off along minus the approach axis (z of the tool), the orientatio
 kept: rungs RUNG apart up to REACH, each an inverse kinematics solution seeded by the
 one before, each (and the points between two) the tight margin clear of everything,
 or where the keyframe itself is nearer, no nearer than it less SLACK
-(approach.rung_clear, the straight ends' rule); the first rung that fails ends that side, what came before
-kept. The start runs q_a, its rungs out, a straight joint-space line to the last
+(approach.axis_rungs, the straight ends' rule); the first rung that fails ends that
+side, what came before kept. The start runs q_a, its rungs out, a straight joint-space line to the last
 rung of the other end, its rungs in, q_b, resampled to the motion's waypoints. It is
 a start only: the NLP then solves the motion with its rows as from any other.
 """
@@ -25,7 +25,7 @@ from __future__ import annotations
 import numpy as np
 
 from tampcli.geometry.sampled_path import resample
-from tampcli.optimize.approach import IK_TOLERANCE, SLACK, rung_clear
+from tampcli.optimize.approach import SLACK, axis_rungs
 from tampcli.optimize.collide import held_spec
 from tampcli.optimize.path import allowed_contacts
 
@@ -58,18 +58,6 @@ def _back_off(problem, checker, q, ctx, ignore) -> list[np.ndarray]:
     here = checker.min_distance(q, ctx.moved, held, ignore, static=False,
                                 horizon=opts.margin)
     clear = min(opts.tight_margin, here) - SLACK
-    tool = world.tool_pose(q)
-    axis = tool[:3, 2]
-    rungs, seed = [], q
-    for j in range(1, int(round(REACH / RUNG)) + 1):
-        target = tool.copy()
-        target[:3, 3] -= axis * (RUNG * j)
-        found, residual = world.ik(target, seed=seed, restarts=0)
-        found = np.asarray(found, dtype=float)
-        if residual > IK_TOLERANCE or np.any(found < world.lower) or np.any(
-                found > world.upper) or not rung_clear(problem, seed, found, ctx.held,
-                                                       ctx.moved, ignore, clear, checker):
-            break
-        rungs.append(found)
-        seed = found
+    _, rungs = axis_rungs(problem, q, -world.tool_pose(q)[:3, 2], RUNG, int(round(REACH / RUNG)),
+                          ctx.held, ctx.moved, ignore, clear, checker, limits=True)
     return rungs

@@ -4,7 +4,6 @@ where the NLP's own contact angles fail."""
 
 from __future__ import annotations
 
-import dataclasses
 import math
 import time
 
@@ -325,8 +324,7 @@ def _tight_keyframes(run: Run, layout, bounds, out, choices, at, checker):
     opts = at.options
     if opts.tight_margin >= opts.margin:
         return out
-    tight = dataclasses.replace(at, options=dataclasses.replace(
-        opts, margin=opts.tight_margin))
+    tight = at.at_margin(opts.tight_margin)
 
     def evaluate(x):
         return keyframe_rows(tight, layout.unpack(x), choices, run.kin, checker, run.start,

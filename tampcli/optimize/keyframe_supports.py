@@ -10,7 +10,6 @@ with the supports in), `with_supports` solves the keyframe NLP again with them.
 
 from __future__ import annotations
 
-import dataclasses
 import time
 
 import numpy as np
@@ -46,8 +45,7 @@ def with_supports(run: Run, layout, bounds, out, choices, at, checker):
     (blind27 p06, blind31 p01)."""
     again = out
     for margin in dict.fromkeys((at.options.margin, at.options.tight_margin)):
-        problem = dataclasses.replace(at, options=dataclasses.replace(at.options,
-                                                                      margin=margin))
+        problem = at.at_margin(margin)
 
         def evaluate(x, problem=problem):
             return keyframe_rows(problem, layout.unpack(x), choices, run.kin, checker,

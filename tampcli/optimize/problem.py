@@ -8,6 +8,7 @@ phases (see skeleton.py for the phases; docs/formats.md, "solution.json", for wh
 
 from __future__ import annotations
 
+import dataclasses
 from dataclasses import dataclass, field
 
 from tampcli.optimize.bodies import body_info, start_support
@@ -58,6 +59,11 @@ class TrajectoryProblem:
     @property
     def n_keyframes(self) -> int:
         return len(self.motions)
+
+    def at_margin(self, margin: float) -> TrajectoryProblem:
+        """This problem with the optimizer's margin `margin` (the tight retries)."""
+        return dataclasses.replace(self, options=dataclasses.replace(self.options,
+                                                                     margin=margin))
 
     def step_of_keyframe(self, k: int) -> Step:
         return self.steps[self.motions[k].step]

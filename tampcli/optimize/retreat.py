@@ -33,13 +33,12 @@ from __future__ import annotations
 import numpy as np
 
 from tampcli.optimize.approach import (
-    IK_TOLERANCE,
     RUNG,
     SLACK,
     Approach,
+    axis_rungs,
     lift,
     place_approach,
-    rung_clear,
     stacked,
 )
 from tampcli.optimize.planar_approach import straight
@@ -100,23 +99,10 @@ def backoff(problem, m, q, moved: dict, checker, contacts) -> Approach | None:
     if not any(c.b == f"body:{name}" for c in near for name in objects):
         return None  # the fingers are clear already: nothing to back off from
     clear = min([opts.tight_margin, *(c.distance for c in near)]) - SLACK
-    tool = world.tool_pose(q)
-    back = -tool[:3, 2]
-    steps = int(np.ceil(REACH / RUNG - 1e-9))
-    targets, qs, seed = [], [], q
-    for j in range(1, steps + 1):
-        target = tool.copy()
-        target[:3, 3] += back * RUNG * j
-        rung, residual = world.ik(target, seed=seed, restarts=0)
-        rung = np.asarray(rung, dtype=float)
-        if residual > IK_TOLERANCE or not rung_clear(problem, seed, rung, None, moved, ignore,
-                                                     clear, checker):
-            break
-        targets.append(target)
-        qs.append(rung)
-        seed = rung
-        if _clear_of(checker, rung, moved, ignore, objects, opts.margin):
-            break
+    targets, qs = axis_rungs(
+        problem, q, -world.tool_pose(q)[:3, 2], RUNG, int(np.ceil(REACH / RUNG - 1e-9)),
+        None, moved, ignore, clear, checker,
+        stop=lambda rung: _clear_of(checker, rung, moved, ignore, objects, opts.margin))
     return Approach(tuple(targets), tuple(qs)) if qs else None
 
 
