@@ -197,6 +197,7 @@ def _floating_warnings(world, scene) -> list[str]:
     2 cm over a bench passed `check` silently, while a sunk one is refused; `solve`
     then read it as `the planar robot cannot lift p2 onto bench`, a proof)."""
     out = []
+    boxes = {b.name: world.aabb(b.name) for b in scene.bodies}
     for body in scene.bodies:
         if body.fixed or not _plain_upright(body):
             continue
@@ -206,7 +207,7 @@ def _floating_warnings(world, scene) -> list[str]:
         for other in scene.bodies:
             if other.name == body.name:
                 continue
-            lo, hi = world.aabb(other.name)
+            lo, hi = boxes[other.name]
             if not (lo[0] <= x <= hi[0] and lo[1] <= y <= hi[1]):
                 continue
             top = other.matrix[2, 3] + _half_height(other) if _plain_upright(other) \
